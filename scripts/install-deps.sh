@@ -1,0 +1,35 @@
+#!/usr/bin/env bash
+# Installs the Debian packages onetip needs, and only those that are missing.
+# Idempotent: a second run installs nothing and takes about a second.
+set -euo pipefail
+
+packages=(
+  build-essential cmake pkg-config git
+  libopencv-dev libeigen3-dev libceres-dev libpcl-dev
+  libturbojpeg0-dev libv4l-dev linux-libc-dev
+  libgtest-dev libgmock-dev libbenchmark-dev
+  libegl-dev libgl-dev libgles-dev libegl-mesa0 libgl1-mesa-dri libglfw3-dev
+  libnanoflann-dev libspnav-dev libevdev-dev libasound2-dev
+  pybind11-dev python3-dev python3-numpy python3-matplotlib python3-pytest
+  mono-mcs mono-runtime
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps: all ${#packages[@]} packages present"
+  exit 0
+fi
+
+echo "install-deps: installing ${#missing[@]} missing packages: ${missing[*]}"
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+echo "install-deps: done"

@@ -1,0 +1,43 @@
+// sim/renderer.hpp — renders what the simulated camera sees: one 8-bit grey
+// frame holding both virtual views side by side (CONVENTIONS.md layout).
+//
+// Each CheckerSheet is a triangle mesh in S textured with an anti-aliased
+// checkerboard; it is projected through each VirtualCamera (with distortion),
+// rasterised with a depth test, then mirrored into its half if the camera's
+// flip is set. ImageEffects are applied last, deterministically from the seed.
+#pragma once
+
+#include <cstdint>
+#include <opencv2/core.hpp>
+#include <vector>
+
+#include "sim/camera_rig.hpp"
+#include "sim/checker_sheet.hpp"
+
+namespace onetip::sim {
+
+struct ImageEffects {
+  double noise_sigma = 2.0;        // additive Gaussian sensor noise, grey levels
+  double blur_sigma = 0.0;         // Gaussian optical blur, pixels (0: none)
+  double vignetting = 0.0;         // brightness loss at the view corners, 0..1
+  double exposure = 1.0;           // multiplies every grey level (0.2..3)
+  double light_gradient = 0.0;     // uneven LED lighting: linear ramp across a view, 0..1
+  int dust_blobs = 0;              // dark occluding blobs (dust) per view
+  int specular_spots = 0;          // bright saturated spots per view
+  double occlusion_fraction = 0.0; // fraction of the pad hidden by a dark band, 0..0.9
+  void validate() const;           // throws InputError naming the bad field
+};
+
+class FrameRenderer {
+ public:
+  explicit FrameRenderer(CameraRig rig);
+  // The whole frame: 2 * view_width x view_height, CV_8UC1.
+  cv::Mat render(const std::vector<CheckerSheet>& sheets, const ImageEffects& effects,
+                 std::uint64_t seed) const;
+  const CameraRig& rig() const { return rig_; }
+
+ private:
+  CameraRig rig_;
+};
+
+}  // namespace onetip::sim

@@ -1,0 +1,106 @@
+// Calibration and pattern files: round trips, the shipped reference file, and
+// the errors bad files must give (one line naming the bad key, no partial file).
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "core/atomic_file.hpp"
+#include "core/calibration.hpp"
+#include "core/csv_table.hpp"
+#include "core/error.hpp"
+#include "core/pattern.hpp"
+
+using namespace onetip;
+namespace fs = std::filesystem;
+
+namespace {
+fs::path tempDir() {
+  fs::path d = fs::temp_directory_path() / ("onetip_core_" + std::to_string(::getpid()));
+  fs::create_directories(d);
+  return d;
+}
+void writeText(const fs::path& p, const std::string& s) { std::ofstream(p) << s; }
+std::string errorOf(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+}  // namespace
+
+TEST(Files, ReadsTheSharedReferenceCalibration) {
+  const std::string path = std::string(ONETIP_SHARED_DIR) +
+                           "/data/real/opencv_stereo_9x6/reference/reference_calib_sbs_pairs01-09.yaml";
+  const StereoCalibration c = loadCalibration(path);
+  EXPECT_EQ(c.image_width, 1280);
+  EXPECT_EQ(c.split_x, 640);
+  EXPECT_NEAR(c.K_left(0, 0), 533.72, 0.01);
+  EXPECT_NEAR(c.D_right[0], -0.3096, 1e-4);
+  EXPECT_NEAR(c.T[0], -83.1688, 1e-3);
+}
+
+TEST(Files, CalibrationRoundTrip) {
+  StereoCalibration c;
+  c.image_width = 1920;
+  c.image_height = 1080;
+  c.split_x = 960;
+  c.flip_right = true;
+  c.K_left = cv::Matx33d(1000, 0, 479.5, 0, 1001, 539.5, 0, 0, 1);
+  c.K_right = c.K_left;
+  c.D_left = {-0.1, 0.02, 0.001, -0.002, 0.003};
+  c.T = {-24, 0.1, 0.2};
+  const auto p = (tempDir() / "calib.yaml").string();
+  saveCalibration(c, p, 0.123);
+  const StereoCalibration d = loadCalibration(p);
+  EXPECT_EQ(d.flip_right, true);
+  EXPECT_EQ(d.flip_left, false);
+  EXPECT_DOUBLE_EQ(d.K_left(1, 1), 1001);
+  EXPECT_DOUBLE_EQ(d.D_left[4], 0.003);
+  EXPECT_DOUBLE_EQ(d.T[2], 0.2);
+}
+
+TEST(Files, BadCalibrationNamesTheKey) {
+  const auto dir = tempDir();
+  EXPECT_NE(errorOf([&] { loadCalibration((dir / "missing.yaml").string()); }).find("no such file"),
+            std::string::npos);
+  writeText(dir / "nok.yaml", "%YAML:1.0\n---\nimage_width: 100\nimage_height: 50\nsplit_x: 50\n");
+  EXPECT_NE(errorOf([&] { loadCalibration((dir / "nok.yaml").string()); }).find("flip_left"),
+            std::string::npos);
+  writeText(dir / "garbage.yaml", "%YAML:1.0\n---\n: : [\n");
+  EXPECT_NE(errorOf([&] { loadCalibration((dir / "garbage.yaml").string()); }), "");
+}
+
+TEST(Files, PatternRoundTripAndValidation) {
+  const auto p = (tempDir() / "pattern.yaml").string();
+  savePattern({9, 13, 2.5}, p);
+  const MarkerPattern q = loadPattern(p);
+  EXPECT_EQ(q.rows, 9);
+  EXPECT_EQ(q.cols, 13);
+  EXPECT_DOUBLE_EQ(q.square_mm, 2.5);
+  writeText(tempDir() / "bad_pattern.yaml", "%YAML:1.0\n---\nrows: 0\ncols: 5\nsquare_mm: 1\n");
+  EXPECT_NE(errorOf([&] { loadPattern((tempDir() / "bad_pattern.yaml").string()); }).find("rows"),
+            std::string::npos);
+}
+
+TEST(Files, AtomicFileLeavesNothingWithoutCommit) {
+  const auto p = tempDir() / "out.csv";
+  fs::remove(p);
+  {
+    CsvWriter w(p.string(), {"a", "b"});
+    w.row({"1", "2"});
+  }
+  EXPECT_FALSE(fs::exists(p));
+  {
+    CsvWriter w(p.string(), {"a", "b"});
+    w.row({"1", formatNumber(2.5)});
+    w.commit();
+  }
+  const CsvTable t = readCsv(p.string());
+  ASSERT_EQ(t.rows.size(), 1u);
+  EXPECT_EQ(t.rows[0][1], "2.5");
+  for (const auto& e : fs::directory_iterator(tempDir()))
+    EXPECT_EQ(e.path().string().find(".tmp."), std::string::npos) << e.path();
+}
