@@ -1,0 +1,22 @@
+# Installs the public library, headers, the CMake package (find_package(onetip)
+# gives onetip::onetip) and a pkg-config file.
+include(CMakePackageConfigHelpers)
+
+install(TARGETS onetip EXPORT onetipTargets
+  LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
+  ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
+  RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR}
+  INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/sdk/include/onetip ${PROJECT_BINARY_DIR}/sdk/include/onetip
+  DESTINATION ${CMAKE_INSTALL_INCLUDEDIR} FILES_MATCHING PATTERN "*.h" PATTERN "*.hpp")
+install(EXPORT onetipTargets NAMESPACE onetip:: DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/onetip)
+
+write_basic_package_version_file(${PROJECT_BINARY_DIR}/onetipConfigVersion.cmake
+  VERSION ${PROJECT_VERSION} COMPATIBILITY SameMajorVersion)
+file(WRITE ${PROJECT_BINARY_DIR}/onetipConfig.cmake
+  "include(\${CMAKE_CURRENT_LIST_DIR}/onetipTargets.cmake)\n")
+install(FILES ${PROJECT_BINARY_DIR}/onetipConfig.cmake ${PROJECT_BINARY_DIR}/onetipConfigVersion.cmake
+  DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/onetip)
+
+configure_file(${PROJECT_SOURCE_DIR}/cmake/onetip.pc.in ${PROJECT_BINARY_DIR}/onetip.pc @ONLY)
+install(FILES ${PROJECT_BINARY_DIR}/onetip.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig)

@@ -1,0 +1,94 @@
+// sim/contact_model.hpp — quasi-static contact mechanics of the pad, step by step.
+//
+// Elastic layer (boundary-element form, Goodman's uncoupling, exact for an
+// incompressible skin, nu = 0.5): a surface traction (q_x, q_y, p) on node j
+// displaces node i by K(r_ij) * (c_t q_x, c_t q_y, -p), where
+// c_t = (2 - nu) / (2 - 2 nu) = 1.5 is the half-space's tangential-to-normal
+// compliance ratio (Cerruti over Boussinesq, averaged over direction), with
+//     K(r) = h^2 exp(-r / T) / r   (r > 0),   K(0) = 4 ln(1 + sqrt 2) h,
+// the Boussinesq point-load response of a half-space (the self term is the exact
+// integral over one h x h cell) damped over the layer thickness T, which the
+// rigid base limits. Tractions are in units of compliance (mm), so only ratios
+// matter and no Young's modulus is needed for kinematics.
+//
+// Normal contact (Signorini): the active set A holds the nodes the indenter
+// penetrates; on A the surface conforms to the indenter, K_AA p = delta, and
+// nodes with p <= 0 leave A.
+// Tangential contact (brush / Cattaneo-Mindlin): each node in contact is anchored
+// to a material point of the indenter (in the indenter's frame) when it first
+// touches. A stick node's tangential displacement is prescribed by its anchor's
+// current position; the traction it needs must satisfy |q| <= mu p, else the
+// node slips, carries |q| = mu p along its trial traction, and is re-anchored
+// where it ends up. Slip starts at the contact edge (where p -> 0) and the stick
+// region shrinks inwards; when no node can stick the contact slides as a whole.
+// Prediction (Ciavarella-Jager superposition, exact for this uncoupled model):
+// sliding the indenter by s at constant approach delta, the stick region is the
+// contact region at approach delta - s / (mu c_t), and gross slip starts at
+// s = mu c_t delta (1.5 mm at delta = 1 mm, mu = 1).
+// History lives in the anchors, so the model must be advanced step by step;
+// advance() sub-steps so no indenter point moves more than max_substep_mm.
+#pragma once
+
+#include <Eigen/Geometry>
+#include <vector>
+
+#include "onetip/types.hpp"
+#include "sim/indenter.hpp"
+#include "sim/pad.hpp"
+
+namespace onetip::sim {
+
+struct NodeContact {
+  bool contact = false;
+  bool slip = false;
+  int owner = -1;               // indenter index
+  Eigen::Vector3d anchor{0, 0, 0};  // material point of the owner, its local frame
+  double p = 0;                 // normal traction (compliance units, mm)
+  Eigen::Vector2d q{0, 0};      // tangential traction
+};
+
+struct ContactStepStats {
+  int contact_nodes = 0;
+  int slip_nodes = 0;
+  int substeps = 0;
+};
+
+constexpr double kTangentialComplianceRatio = 1.5;
+
+class ContactModel {
+ public:
+  ContactModel(const PadLattice& lattice, std::vector<IndenterGeometry> indenters,
+               double max_substep_mm = 0.1);
+
+  // Releases every contact: zero tractions, zero displacement, no anchors.
+  void reset(const std::vector<Eigen::Isometry3d>& poses);
+  // Moves the indenters to `poses` (one per indenter) through sub-steps.
+  ContactStepStats advance(const std::vector<Eigen::Isometry3d>& poses);
+
+  // Displacement of a node's surface (and marker layer) point, P frame, mm.
+  Eigen::Vector3d displacement(int node) const;
+  // Displacements of every lattice node (for rendering), row-major like the lattice.
+  std::vector<Eigen::Vector3d> allDisplacements() const;
+
+  const NodeContact& node(int i) const { return nodes_[static_cast<size_t>(i)]; }
+  const std::vector<int>& activeNodes() const { return active_; }
+  ContactState state() const;
+  const std::vector<Eigen::Isometry3d>& poses() const { return poses_; }
+
+ private:
+  void solve(const std::vector<Eigen::Isometry3d>& poses);
+  double kernel(int i, int j) const;
+  Eigen::Vector3d displacementFromActive(int node) const;
+  void refreshDisplacementCache(const std::vector<Eigen::Isometry3d>& poses);
+
+  const PadLattice& lattice_;
+  std::vector<IndenterGeometry> indenters_;
+  double max_substep_mm_;
+  std::vector<double> kernel_table_;  // by lattice offset (da, db)
+  std::vector<NodeContact> nodes_;
+  std::vector<int> active_;
+  std::vector<Eigen::Vector3d> u_cache_;  // displacement of nodes near the indenters
+  std::vector<Eigen::Isometry3d> poses_;
+};
+
+}  // namespace onetip::sim

@@ -1,0 +1,49 @@
+// sim/ground_truth.hpp — the simulator's exact answer for every frame.
+//
+// The 6-D ground truth follows CONVENTIONS.md using the SDK's own contact rule
+// applied to the exact marker field, so that a perfect measurement reproduces
+// it: the pad is "in contact" while the largest marker deformation modulus
+// exceeds contact_threshold_mm (0.1 mm); at onset T_onset is the finger's pose
+// (indenter 0) and c0 the centroid of the rest positions of the markers whose
+// deformation modulus is at least region_fraction (50%) of the largest normal
+// deformation. Then T = T_now * inverse(T_onset) and [dx..roll] per
+// core/rotation.hpp. The state column comes from the contact model's nodes
+// (no slip: stick; all slip: slip; otherwise partial_slip).
+#pragma once
+
+#include <Eigen/Geometry>
+#include <vector>
+
+#include "core/marker_field.hpp"
+#include "onetip/types.hpp"
+
+namespace onetip::sim {
+
+struct GroundTruthFrame {
+  int index = 0;
+  double t = 0;
+  MarkerField markers;                  // S, mm (all markers valid)
+  std::vector<std::uint8_t> contact;    // per marker: its node touches an indenter
+  std::vector<std::uint8_t> slip;       // per marker: its node slips
+  bool in_contact = false;              // by the SDK's threshold rule
+  ContactState state = ContactState::none;
+  Input6 input;                         // zero when not in contact
+  std::vector<Eigen::Isometry3d> indenter_poses;  // S
+};
+
+class GroundTruthPose {
+ public:
+  explicit GroundTruthPose(double contact_threshold_mm = 0.1, double region_fraction = 0.5)
+      : threshold_(contact_threshold_mm), fraction_(region_fraction) {}
+  // Fills frame.in_contact and frame.input from frame.markers (S), the rest
+  // markers (S) and indenter 0's pose (S).
+  void update(GroundTruthFrame& frame, const MarkerField& rest);
+
+ private:
+  double threshold_, fraction_;
+  bool active_ = false;
+  Eigen::Isometry3d onset_pose_ = Eigen::Isometry3d::Identity();
+  Eigen::Vector3d c0_ = Eigen::Vector3d::Zero();
+};
+
+}  // namespace onetip::sim

@@ -1,0 +1,78 @@
+#include "sim/ground_truth_writer.hpp"
+
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <opencv2/imgcodecs.hpp>
+
+#include "core/csv_table.hpp"
+#include "core/error.hpp"
+
+namespace onetip::sim {
+
+namespace fs = std::filesystem;
+
+namespace {
+std::string frameName(int index) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%06d.png", index);
+  return buf;
+}
+
+// Removes the staging folder unless the run completed.
+struct StagingDir {
+  fs::path path;
+  bool keep = false;
+  ~StagingDir() {
+    if (!keep) {
+      std::error_code ec;
+      fs::remove_all(path, ec);
+    }
+  }
+};
+}  // namespace
+
+void writeSimulation(Simulator& sim, const std::string& out_dir, const WriteOptions& options) {
+  const fs::path target(out_dir);
+  if (fs::exists(target) && !(fs::is_directory(target) && (fs::is_empty(target) || fs::exists(target / "gt_pose.csv"))))
+    throw InputError(out_dir + ": exists and is not an earlier simulator output; choose another --out");
+  StagingDir staging{fs::path(out_dir + ".tmp." + std::to_string(::getpid()))};
+  std::error_code ec;
+  fs::remove_all(staging.path, ec);
+  if (!fs::create_directories(staging.path / "frames", ec) || ec)
+    throw InputError(out_dir + ": cannot create the output folder (" + ec.message() + ")");
+
+  saveCalibration(sim.calibration(), (staging.path / "calib.yaml").string());
+  savePattern(sim.pattern(), (staging.path / "pattern.yaml").string());
+  CsvWriter pose((staging.path / "gt_pose.csv").string(),
+                 {"frame", "contact", "state", "dx", "dy", "dz", "yaw", "pitch", "roll"});
+  CsvWriter markers((staging.path / "gt_markers.csv").string(), {"frame", "id", "x", "y", "z", "contact", "slip"});
+  const int n = sim.frameCount();
+  while (!sim.done()) {
+    const GroundTruthFrame& f = sim.next();
+    const std::string k = std::to_string(f.index);
+    pose.row({k, f.in_contact ? "1" : "0", std::string(toString(f.in_contact ? f.state : ContactState::none)),
+              formatNumber(f.input.dx), formatNumber(f.input.dy), formatNumber(f.input.dz), formatNumber(f.input.yaw),
+              formatNumber(f.input.pitch), formatNumber(f.input.roll)});
+    for (int id = 0; id < f.markers.size(); ++id) {
+      const auto& p = f.markers.position[static_cast<size_t>(id)];
+      markers.row({k, std::to_string(id), formatNumber(p.x()), formatNumber(p.y()), formatNumber(p.z()),
+                   f.contact.empty() ? "0" : std::to_string(f.contact[static_cast<size_t>(id)]),
+                   f.slip.empty() ? "0" : std::to_string(f.slip[static_cast<size_t>(id)])});
+    }
+    if (!options.field_only) {
+      const std::string png = (staging.path / "frames" / frameName(f.index)).string();
+      if (!cv::imwrite(png, sim.render())) throw InputError(png + ": cannot write the frame");
+    }
+    if (options.on_frame) options.on_frame(f, n);
+  }
+  pose.commit();
+  markers.commit();
+  if (fs::exists(target)) fs::remove_all(target);
+  fs::rename(staging.path, target, ec);
+  if (ec) throw InputError(out_dir + ": cannot move the output into place (" + ec.message() + ")");
+  staging.keep = true;
+}
+
+}  // namespace onetip::sim

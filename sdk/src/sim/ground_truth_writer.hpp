@@ -1,0 +1,28 @@
+// sim/ground_truth_writer.hpp — writes a simulated run to a folder
+// (CONVENTIONS.md, issue 2):
+//   DIR/frames/000000.png ...  (unless field-only)
+//   DIR/gt_pose.csv     frame,contact,state,dx,dy,dz,yaw,pitch,roll
+//   DIR/gt_markers.csv  frame,id,x,y,z,contact,slip      (S, mm)
+//   DIR/calib.yaml, DIR/pattern.yaml
+// Everything is written into DIR.tmp.<pid> and renamed to DIR at the end, so
+// a failed run leaves no partial output. An existing DIR is replaced only if it
+// is itself a simulator output (holds gt_pose.csv), never otherwise.
+#pragma once
+
+#include <functional>
+#include <string>
+
+#include "sim/simulator.hpp"
+
+namespace onetip::sim {
+
+struct WriteOptions {
+  bool field_only = false;
+  // Called after each frame with (frame index, frame count); may print progress.
+  std::function<void(const GroundTruthFrame&, int)> on_frame;
+};
+
+// Plays the simulator to the end and writes the run; throws InputError.
+void writeSimulation(Simulator& sim, const std::string& out_dir, const WriteOptions& options);
+
+}  // namespace onetip::sim
