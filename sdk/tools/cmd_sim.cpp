@@ -3,6 +3,8 @@
 #include <iostream>
 
 #include "command.hpp"
+#include "contact_sheet.hpp"
+#include "core/error.hpp"
 #include "sim/ground_truth_writer.hpp"
 
 namespace onetip::tools {
@@ -16,14 +18,26 @@ int runSim(const Args& args) {
   sim::Simulator simulator(std::move(scenario), options);
   sim::WriteOptions write;
   write.field_only = args.has("field-only");
+  const auto sheet_path = args.optional("contact-sheet");
+  if (sheet_path && write.field_only) throw InputError("--contact-sheet needs rendered frames (drop --field-only)");
+  ContactSheet sheet(simulator.frameCount());
   const bool quiet = args.has("quiet");
-  write.on_frame = [quiet](const sim::GroundTruthFrame& f, int n) {
+  write.on_frame = [&](const sim::GroundTruthFrame& f, int n) {
+    if (sheet_path && sheet.wants(f.index)) {
+      char line[160];
+      std::snprintf(line, sizeof line, "truth dx %.2f dy %.2f dz %.2f  yaw %.1f pitch %.1f roll %.1f", f.input.dx,
+                    f.input.dy, f.input.dz, f.input.yaw, f.input.pitch, f.input.roll);
+      sheet.add(simulator.render(), {"frame " + std::to_string(f.index) + "  " +
+                                         std::string(toString(f.in_contact ? f.state : ContactState::none)),
+                                     line});
+    }
     if (quiet) return;
     std::printf("frame %4d/%d  contact %d  %-12s  dx %7.3f dy %7.3f dz %7.3f  yaw %7.2f pitch %7.2f roll %7.2f\n",
                 f.index + 1, n, f.in_contact ? 1 : 0, std::string(toString(f.in_contact ? f.state : ContactState::none)).c_str(),
                 f.input.dx, f.input.dy, f.input.dz, f.input.yaw, f.input.pitch, f.input.roll);
   };
   sim::writeSimulation(simulator, args.get("out"), write);
+  if (sheet_path) sheet.save(*sheet_path);
   std::cout << "wrote " << simulator.frameCount() << " frames to " << args.get("out") << "\n";
   return 0;
 }
@@ -37,7 +51,8 @@ const CommandRegistrar reg{{
      {"frames", "number of frames spread over the scenario (default: duration x fps + 1)", false, false},
      {"seed", "random seed for image noise and random poses (default: the scenario's)", false, false},
      {"field-only", "write only the ground truth, no rendered frames (fast)", true, false},
-     {"quiet", "do not print the per-frame ground truth", true, false}},
+     {"quiet", "do not print the per-frame ground truth", true, false},
+     {"contact-sheet", "also write a PNG grid of 12 captioned frames to this path", false, false}},
     runSim}};
 
 }  // namespace

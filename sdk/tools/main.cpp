@@ -5,9 +5,11 @@
 
 #include "command.hpp"
 #include "core/error.hpp"
+#include "sim/sim_frame_source.hpp"
 
 int main(int argc, char** argv) {
   using namespace onetip::tools;
+  onetip::sim::registerSimFrameSource();  // "sim:SCENARIO.yaml" is a frame source everywhere
   auto& registry = commandRegistry();
   if (argc < 2 || std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h") {
     std::cout << "usage: onetip <command> [options]   (onetip <command> --help)\n\ncommands:\n";

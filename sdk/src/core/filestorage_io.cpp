@@ -14,7 +14,7 @@ cv::FileStorage openForReading(const std::string& path) {
     if (!fs.isOpened()) throw InputError(path + ": not a YAML or JSON document");
     return fs;
   } catch (const cv::Exception& e) {
-    throw InputError(path + ": malformed YAML/JSON (" + e.msg + ")");
+    throw InputError(path + ": malformed YAML/JSON (" + e.err + ")");
   }
 }
 

@@ -1,0 +1,12 @@
+#!/usr/bin/env bash
+# The main job on the embedded default sensor (the simulator): installs what is
+# missing, builds Release, plays a scripted touch (press, slide, twist,
+# release), prints the 6-D stream as it goes and writes what the camera saw to
+# out/demo/contact_sheet.png.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/install-deps.sh
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build build -j"$(nproc)" --target onetip_cli
+mkdir -p out
+./build/bin/onetip sim --scenario samples/scenarios/demo_touch.yaml --out out/demo --contact-sheet out/demo/contact_sheet.png

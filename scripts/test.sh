@@ -1,0 +1,9 @@
+#!/usr/bin/env bash
+# Installs what is missing, builds Release and runs the whole test suite with ctest.
+# Extra arguments go to ctest (e.g. -L sim to run one area).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/install-deps.sh
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build build -j"$(nproc)"
+cd build && ctest --output-on-failure -j"$(nproc)" "$@"
