@@ -5,8 +5,9 @@
 //   1. scene: an occluding band (grey kOccluderGrey) entering from one side
 //      (chosen from the seed) and covering occlusion_fraction of the pad
 //      pixels; dust blobs (dark soft discs, radius 3..12 px, 60..90 % dark)
-//      and specular spots (Gaussian highlights of +400 grey levels peak, so
-//      their core saturates, radius 2..8 px) placed on the pad's bounding box;
+//      and specular spots (Gaussian highlights, sigma 1..4 px, +400 grey
+//      levels at the peak so their core saturates) placed on the pad's
+//      bounding box;
 //   2. lighting: grey *= exposure * (1 + light_gradient * t) * (1 - vignetting * r^2),
 //      t in [-1/2, 1/2] the position along a seeded direction across the view,
 //      r the distance from the view centre divided by the corner distance;

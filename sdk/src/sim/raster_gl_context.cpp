@@ -32,16 +32,15 @@ HeadlessGlContext::HeadlessGlContext() {
   if (!eglBindAPI(EGL_OPENGL_ES_API)) fail("eglBindAPI");
   const EGLint attributes[] = {EGL_CONTEXT_MAJOR_VERSION, 3, EGL_CONTEXT_MINOR_VERSION, 0, EGL_NONE};
   EGLContext context = eglCreateContext(display, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attributes);
-  if (context == EGL_NO_CONTEXT) {
-    eglTerminate(display);
-    fail("eglCreateContext (OpenGL ES 3.0, no config)");
-  }
+  if (context == EGL_NO_CONTEXT) fail("eglCreateContext (OpenGL ES 3.0, no config)");
   context_ = context;
 }
 
 HeadlessGlContext::~HeadlessGlContext() {
+  // The display stays initialised: EGL displays are per process, not
+  // reference-counted, so terminating it would break other contexts on it
+  // (and Mesa frees its driver state only then, which leak checkers report).
   eglDestroyContext(display_, context_);
-  eglTerminate(display_);
 }
 
 std::string HeadlessGlContext::renderer() const {

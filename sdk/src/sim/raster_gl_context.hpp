@@ -2,6 +2,8 @@
 // (Mesa's surfaceless platform: no window, no display server; llvmpipe on
 // machines without a GPU). Rendering goes to framebuffer objects.
 //
+// The EGL display is initialised once and left so for the process (displays
+// are shared, not reference-counted); each object owns one context.
 // The context is current on at most one thread at a time: use a Binding
 // (makes it current on construction, releases it on destruction) around
 // every block of GL calls.
