@@ -12,6 +12,7 @@ packages=(
   libnanoflann-dev libspnav-dev libevdev-dev libasound2-dev
   pybind11-dev python3-dev python3-numpy python3-matplotlib python3-pytest
   mono-mcs mono-runtime
+  qemu-system-x86 linux-image-amd64 busybox-static cpio udev
 )
 
 missing=()

@@ -1,0 +1,70 @@
+// contact/stick_slip_classifier.hpp — per-marker stick/slip labels, frame by frame.
+//
+// Method (a discrete brush model run on the measurements): every contact-region
+// marker i carries an anchor a_i, its position in the finger's frame,
+// a_i = T^-1 p_i (T: the finger's estimated pose since onset, S, mm), taken when
+// it enters the region or last slipped. A sticking marker stays on its anchor,
+// so its drift d_i = p_i - T a_i only holds measurement noise. Classification
+// with the current pose estimate T_k, splitting d_i along the contact normal
+// n_i into a normal part d_n = d_i . n_i and a tangential part d_t:
+//   max(|d_n|, |d_t|) > slip_threshold_mm -> the marker does not follow the
+//     finger: `slip` when the tangential part dominates (it slides over the
+//     finger), `detached` when the normal part does (a region marker that is
+//     not actually touching, e.g. just outside the contact edge); a_i is
+//     re-anchored at T_k^-1 p_i;
+//   a slipping or detached marker whose drift stays below the threshold for
+//   stick_hold_frames consecutive frames sticks again (hysteresis).
+// Because the drift is measured against a fixed anchor, slow creep accumulates
+// until it crosses the threshold while position noise does not.
+#pragma once
+
+#include <Eigen/Geometry>
+#include <cstdint>
+#include <vector>
+
+#include "core/marker_field.hpp"
+
+namespace onetip::contact {
+
+enum class MarkerLabel : std::uint8_t { outside = 0, stick = 1, slip = 2, detached = 3 };
+
+struct StickSlipOptions {
+  double slip_threshold_mm = 0.06;  // tangential drift from the anchor (about 3 sigma of noise)
+  int stick_hold_frames = 10;       // quiet frames before a slipping marker sticks again
+  void validate() const;            // throws InputError naming the bad field
+};
+
+class StickSlipClassifier {
+ public:
+  explicit StickSlipClassifier(StickSlipOptions options = {});
+
+  // Forgets every marker; sizes the tables for `marker_count` markers.
+  void reset(int marker_count);
+  // Markers of `members` that are valid in `now` keep their state; every other
+  // marker is forgotten (label outside).
+  void retain(const std::vector<int>& members, const MarkerField& now);
+  // Anchors the valid members that have no anchor yet at pose^-1 p (label stick).
+  void anchorNew(const std::vector<int>& members, const MarkerField& now, const Eigen::Isometry3d& pose);
+  // Labels every anchored marker from its drift under `pose`; returns how many
+  // markers changed label.
+  int classify(const MarkerField& now, const std::vector<Eigen::Vector3d>& normals, const Eigen::Isometry3d& pose);
+  // Macroscopic slip: every anchored marker slips and is re-anchored under `pose`.
+  void markAllSlipping(const MarkerField& now, const Eigen::Isometry3d& pose);
+  // Every anchored marker sticks, re-anchored under `pose`.
+  void markAllSticking(const MarkerField& now, const Eigen::Isometry3d& pose);
+
+  MarkerLabel label(int id) const { return label_[static_cast<size_t>(id)]; }
+  const Eigen::Vector3d& anchor(int id) const { return anchor_[static_cast<size_t>(id)]; }
+  const std::vector<MarkerLabel>& labels() const { return label_; }
+  std::vector<int> withLabel(MarkerLabel l) const;
+
+ private:
+  void reanchor(int id, const MarkerField& now, const Eigen::Isometry3d& pose_inverse);
+
+  StickSlipOptions options_;
+  std::vector<MarkerLabel> label_;
+  std::vector<Eigen::Vector3d> anchor_;
+  std::vector<int> quiet_frames_;
+};
+
+}  // namespace onetip::contact

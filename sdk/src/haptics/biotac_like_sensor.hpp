@@ -1,0 +1,65 @@
+// haptics/biotac_like_sensor.hpp — a 20-channel BioTac-like sensor model:
+// 19 electrode channels and one DC pressure channel, 12-bit counts.
+//
+// Geometry (device frame D, mm): the fingertip is the ellipsoid centred at
+// C = (0, 0, a_z) with semi-axes (a_x, a_y, a_z) = (7, 11, 7), so its lowest
+// point touches z = 0. Its surface below the equator is sampled at M points
+// q_k (polar angle t from straight down in [0, 90] deg, azimuth p), each with
+// area weight A_k. A plate (ContactPlane: point c, normal n into the finger)
+// indents the skin at q_k by   delta_k = max(0, -n.(q_k - c))   (mm).
+// Electrode j sits at the surface point of direction
+//   u_j = (sin t_j cos p_j, sin t_j sin p_j, -cos t_j): one at the centre of the
+//   pad, six at t = 35 deg, twelve at t = 68 deg (every 60 / 30 deg);
+// its impedance rises with the skin compressed around it:
+//   e_j = base_j + g_e * sum_k A_k K(|q_k - p_j|) delta_k / sum_k A_k K(...)
+//         with a Gaussian kernel K(r) = exp(-r^2 / (2 * 2.5^2)), g_e = 500 counts/mm;
+//   base_j = 1800 + 40 * (j mod 5) counts (electrodes differ at rest).
+// The DC pressure channel follows the indented volume:
+//   p_dc = 500 + g_p * sum_k A_k delta_k,  g_p = 8 counts/mm^3.
+// Counts are rounded to integers and clamped to [0, 4095] (12 bits), plus
+// optional Gaussian noise (noise_counts, deterministic per seed) before rounding.
+// This is a stand-in with the BioTac's shape of data (smooth, coupled,
+// saturating channels on a 3-D manifold of platform poses), not a model fitted
+// to a real BioTac. With noise, sense() draws from an internal generator, so
+// one instance must not be shared between threads.
+#pragma once
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <random>
+#include <vector>
+
+#include "haptics/tactile_sensor_model.hpp"
+
+namespace onetip::haptics {
+
+struct BiotacLikeOptions {
+  double noise_counts = 0.0;  // Gaussian sensor noise, counts (>= 0)
+  std::uint64_t seed = 1;
+  int polar_samples = 12;     // surface sampling: rings from the pad to the equator
+  int azimuth_samples = 36;
+  void validate() const;      // throws InputError naming the bad field
+};
+
+class BiotacLikeSensor final : public TactileSensorModel {
+ public:
+  static constexpr int kElectrodes = 19;
+  explicit BiotacLikeSensor(const BiotacLikeOptions& options = {});
+
+  int channels() const override { return kElectrodes + 1; }
+  void sense(const ContactPlane& plate, double* out) const override;
+  using TactileSensorModel::sense;
+  double fullScale(int) const override { return 4095.0; }
+
+  const std::vector<Eigen::Vector3d>& electrodes() const noexcept { return electrodes_; }
+
+ private:
+  BiotacLikeOptions options_;
+  std::vector<Eigen::Vector3d> samples_;  // q_k
+  std::vector<double> area_;              // A_k
+  Eigen::MatrixXd kernel_;                // 19 x M, rows normalised to sum 1
+  std::vector<Eigen::Vector3d> electrodes_;
+  mutable std::mt19937_64 rng_;
+};
+
+}  // namespace onetip::haptics

@@ -1,0 +1,31 @@
+#include "input/input_shaping.hpp"
+
+#include <cmath>
+#include <string>
+
+#include "core/error.hpp"
+
+namespace onetip::input {
+
+namespace {
+constexpr std::array<const char*, 6> kAxis{"dx", "dy", "dz", "yaw", "pitch", "roll"};
+}
+
+void InputShaping::validate() const {
+  for (size_t k = 0; k < 6; ++k) {
+    if (!std::isfinite(gain[k])) throw InputError(std::string("input shaping: gain of ") + kAxis[k] + " must be finite");
+    if (!(dead_zone[k] >= 0) || !std::isfinite(dead_zone[k]))
+      throw InputError(std::string("input shaping: dead_zone of ") + kAxis[k] + " must be a non-negative number");
+  }
+}
+
+Input6 InputShaping::apply(const Input6& x) const {
+  auto v = x.asArray();
+  for (size_t k = 0; k < 6; ++k) {
+    const double magnitude = std::max(0.0, std::abs(v[k]) - dead_zone[k]);
+    v[k] = gain[k] * std::copysign(magnitude, v[k]);
+  }
+  return Input6::fromArray(v);
+}
+
+}  // namespace onetip::input

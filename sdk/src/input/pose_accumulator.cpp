@@ -1,0 +1,23 @@
+#include "input/pose_accumulator.hpp"
+
+#include "core/rotation.hpp"
+
+namespace onetip::input {
+
+void PoseAccumulator::reset(const Eigen::Vector3d& onset_centroid) {
+  c0_ = onset_centroid;
+  motion_ = Eigen::Isometry3d::Identity();
+  euler_sum_ = Input6{};
+}
+
+void PoseAccumulator::add(const Eigen::Isometry3d& increment) {
+  motion_ = increment * motion_;
+  const auto step = input6FromMotion(increment, c0_).asArray();
+  auto sum = euler_sum_.asArray();
+  for (size_t k = 0; k < sum.size(); ++k) sum[k] += step[k];
+  euler_sum_ = Input6::fromArray(sum);
+}
+
+Input6 PoseAccumulator::composed() const { return input6FromMotion(motion_, c0_); }
+
+}  // namespace onetip::input

@@ -1,0 +1,106 @@
+#include "input/pose_tracker.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "core/error.hpp"
+
+namespace onetip::input {
+
+void PoseTrackerOptions::validate() const {
+  contact.validate();
+  pose.validate();
+  filter.validate();
+  shaping.validate();
+  press.validate();
+  for (double r : working_range)
+    if (!(r > 0) || !std::isfinite(r)) throw InputError("pose tracker options: working_range entries must be positive");
+  if (!(clamp_factor >= 1) || !std::isfinite(clamp_factor))
+    throw InputError("pose tracker options: clamp_factor must be at least 1");
+}
+
+PoseTracker::PoseTracker(PoseTrackerOptions options)
+    : options_((options.validate(), options)),
+      analyzer_(options_.contact),
+      estimator_(options_.pose),
+      filter_(makeInputFilter(options_.filter)),
+      button_(options_.press) {}
+
+void PoseTracker::reset() {
+  estimator_.reset();
+  if (filter_) filter_->reset();
+  button_.reset();
+  last_ = TrackerResult{};
+}
+
+void PoseTracker::emit(TrackerResult& r, EventType type, std::string message) const {
+  r.events.push_back({type, r.t, r.input, r.state, std::move(message)});
+}
+
+void PoseTracker::fillOutputs(TrackerResult& r) {
+  r.composed = accumulator_.composed();
+  r.euler_sum = accumulator_.eulerSum();
+  auto v = accumulator_.value(options_.accumulation).asArray();
+  for (size_t k = 0; k < 6; ++k) {
+    const double range = options_.working_range[k];
+    // dz is a press depth, [0, range]; pulling out of the pad shows only as noise.
+    const double low = k == 2 ? -(options_.clamp_factor - 1) * range : -range;
+    r.out_of_range = r.out_of_range || v[k] > range || v[k] < low;
+    const double limit = options_.clamp_factor * range;
+    v[k] = std::clamp(v[k], -limit, limit);
+  }
+  r.raw = Input6::fromArray(v);
+  const Input6 smooth = filter_ ? filter_->apply(r.raw, r.t) : r.raw;
+  r.input = options_.shaping.apply(smooth);
+}
+
+TrackerResult PoseTracker::update(const MarkerField& now_S, const MarkerField& rest_S, double t) {
+  TrackerResult r;
+  r.t = t;
+  r.field = analyzer_.analyze(now_S, rest_S);
+  if (r.field.status == contact::ContactFieldStatus::too_few_markers) {
+    TrackerResult held = last_;
+    held.t = t;
+    held.held = true;
+    held.field = std::move(r.field);
+    held.events.clear();
+    emit(held, EventType::error,
+         "too few valid markers (" + std::to_string(held.field.valid_markers) + "): output held");
+    return held;
+  }
+  r.step = estimator_.update(r.field, now_S);
+  r.contact = r.step.active;
+  r.state = r.step.state;
+  if (r.step.onset) {
+    accumulator_.reset(r.step.onset_centroid);
+    if (filter_) filter_->reset();
+  } else if (r.step.active) {
+    accumulator_.add(r.step.increment);
+  }
+  if (r.contact) fillOutputs(r);
+
+  if (r.step.onset) emit(r, EventType::contact_begin);
+  if (!r.contact && last_.contact) {
+    if (button_.pressed()) {
+      button_.reset();
+      emit(r, EventType::release);
+    }
+    if (filter_) filter_->reset();
+    emit(r, EventType::contact_end);
+  }
+  if (r.state != last_.state) emit(r, EventType::state_changed);
+  if (r.contact) {
+    emit(r, EventType::input);
+    if (button_.update(r.raw.dz)) emit(r, button_.pressed() ? EventType::press : EventType::release);
+    if (r.step.solver_failed) emit(r, EventType::error, "pose solver failed: footprint centroid used");
+    if (r.step.step_limited) emit(r, EventType::error, "motion step limited to the configured maximum");
+    if (r.out_of_range && !last_.out_of_range) emit(r, EventType::error, "beyond the working range");
+  }
+  r.pressed = button_.pressed();
+  last_ = r;
+  last_.field = contact::ContactField{};  // only the outputs are needed to hold a frame
+  return r;
+}
+
+}  // namespace onetip::input

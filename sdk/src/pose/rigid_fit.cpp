@@ -1,0 +1,84 @@
+#include "pose/rigid_fit.hpp"
+
+#include <Eigen/Eigenvalues>
+#include <Eigen/SVD>
+#include <cmath>
+
+namespace onetip::pose {
+
+RigidFit fitRigidMotion(const std::vector<Eigen::Vector3d>& from, const std::vector<Eigen::Vector3d>& to,
+                        const std::vector<double>& weights) {
+  RigidFit fit;
+  const size_t n = from.size();
+  if (n < 3 || to.size() != n || (!weights.empty() && weights.size() != n)) return fit;
+  auto w = [&](size_t i) { return weights.empty() ? 1.0 : weights[i]; };
+  double wsum = 0;
+  Eigen::Vector3d ca = Eigen::Vector3d::Zero(), cb = Eigen::Vector3d::Zero();
+  for (size_t i = 0; i < n; ++i) {
+    wsum += w(i);
+    ca += w(i) * from[i];
+    cb += w(i) * to[i];
+  }
+  if (!(wsum > 0)) return fit;
+  ca /= wsum;
+  cb /= wsum;
+  Eigen::Matrix3d H = Eigen::Matrix3d::Zero();
+  for (size_t i = 0; i < n; ++i) H += w(i) * (from[i] - ca) * (to[i] - cb).transpose();
+  const Eigen::JacobiSVD<Eigen::Matrix3d> svd(H, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  const Eigen::Vector3d s = svd.singularValues();
+  if (!(s[0] > 0) || s[1] < 1e-9 * s[0]) return fit;
+  Eigen::Matrix3d D = Eigen::Matrix3d::Identity();
+  D(2, 2) = (svd.matrixV() * svd.matrixU().transpose()).determinant() < 0 ? -1.0 : 1.0;
+  const Eigen::Matrix3d R = svd.matrixV() * D * svd.matrixU().transpose();
+  fit.motion.linear() = R;
+  fit.motion.translation() = cb - R * ca;
+  double sq = 0;
+  for (size_t i = 0; i < n; ++i) sq += w(i) * (fit.motion * from[i] - to[i]).squaredNorm();
+  fit.rms_mm = std::sqrt(sq / wsum);
+  fit.ok = fit.motion.matrix().allFinite();
+  return fit;
+}
+
+RigidFit fitRigidMotionRobust(const std::vector<Eigen::Vector3d>& from, const std::vector<Eigen::Vector3d>& to,
+                              double scale_mm, int iterations) {
+  RigidFit fit = fitRigidMotion(from, to);
+  std::vector<double> w(from.size());
+  for (int it = 0; it < iterations && fit.ok; ++it) {
+    for (size_t i = 0; i < from.size(); ++i) {
+      const double r = (fit.motion * from[i] - to[i]).norm() / scale_mm;
+      w[i] = 1.0 / (1.0 + r * r);
+    }
+    const RigidFit next = fitRigidMotion(from, to, w);
+    if (!next.ok) break;
+    fit = next;
+  }
+  return fit;
+}
+
+RigidFit fitTranslation(const std::vector<Eigen::Vector3d>& from, const std::vector<Eigen::Vector3d>& to) {
+  RigidFit fit;
+  if (from.empty() || to.size() != from.size()) return fit;
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  for (size_t i = 0; i < from.size(); ++i) mean += to[i] - from[i];
+  mean /= static_cast<double>(from.size());
+  double sq = 0;
+  for (size_t i = 0; i < from.size(); ++i) sq += (from[i] + mean - to[i]).squaredNorm();
+  fit.motion.translation() = mean;
+  fit.rms_mm = std::sqrt(sq / static_cast<double>(from.size()));
+  fit.ok = mean.allFinite();
+  return fit;
+}
+
+double rotationSpread(const std::vector<Eigen::Vector3d>& points) {
+  if (points.size() < 3) return 0;
+  Eigen::Vector2d mean = Eigen::Vector2d::Zero();
+  for (const auto& p : points) mean += p.head<2>();
+  mean /= static_cast<double>(points.size());
+  Eigen::Matrix2d cov = Eigen::Matrix2d::Zero();
+  for (const auto& p : points) cov += (p.head<2>() - mean) * (p.head<2>() - mean).transpose();
+  cov /= static_cast<double>(points.size());
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(cov);
+  return std::sqrt(std::max(0.0, eig.eigenvalues()[0]));
+}
+
+}  // namespace onetip::pose

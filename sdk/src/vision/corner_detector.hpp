@@ -1,0 +1,84 @@
+// vision/corner_detector.hpp — checkerboard X-corner detector (the paper's
+// double-layer circular sampler, Sec. III-C).
+//
+// Pipeline on one 8-bit grey image (pixels, centres at integer coordinates):
+//  1. pre-filter: a saddle response -det(H) of the image downsampled by
+//     prefilter_downsample (Hessian H from Sobel derivatives); its local maxima
+//     above a fraction of the strongest are the candidates (no dense ring test);
+//  2. quick test of each candidate: its outer ring (scaled by max(1, f/2) for
+//     the pre-filter's position error, f = prefilter_downsample) shows four
+//     sectors; then sub-pixel refinement (vision/subpixel_refiner.hpp);
+//  3. ring test at the refined point (vision/ring_sampler.hpp): two concentric
+//     rings of samples must both show four alternating dark/light sectors, be
+//     centrally symmetric (any locally affine view of a corner is) and agree in
+//     phase; score = contrast x symmetry x phase agreement;
+//  4. non-maximum suppression: of corners closer than min_separation_px the
+//     best score wins.
+// Each corner also carries its two edge directions and which sector pair is
+// dark (angles in radians, image axes x right, y down, modulo pi), which the
+// grid builder uses to link neighbours.
+#pragma once
+
+#include <opencv2/core.hpp>
+#include <optional>
+#include <vector>
+
+#include "vision/ring_sampler.hpp"
+#include "vision/subpixel_refiner.hpp"
+#include "vision/view_split.hpp"
+
+namespace onetip::vision {
+
+struct CornerDetectorOptions {
+  float inner_radius_px = 3.0f;    // inner sampling ring
+  float outer_radius_px = 5.0f;    // outer sampling ring
+  int samples_per_ring = 16;       // multiple of 4, 8..64
+  int prefilter_downsample = 2;    // 1, 2 or 4
+  float prefilter_threshold = 0.01f;  // candidates above this fraction of the max response
+  float min_contrast = 6.0f;       // grey levels: mean |sample - ring mean| on both rings
+  float min_symmetry = 0.5f;       // 1 - |s(a) - s(a+pi)| / (2 contrast), averaged
+  float min_phase_agreement = 0.8f;  // fraction of angles where both rings agree
+  float min_separation_px = 4.0f;  // non-maximum suppression distance
+  SubpixelOptions subpixel;        // refinement
+  void validate() const;           // throws InputError naming the bad field
+};
+
+struct Corner {
+  cv::Point2f pt;              // pixels, centres at integers
+  float score = 0.0f;          // contrast x symmetry x phase agreement (grey levels)
+  float contrast = 0.0f;       // grey levels
+  float edge_angle[2] = {0, 0};  // the two edge lines through the corner, radians mod pi
+  float dark_bisector = 0.0f;  // bisector line of the two dark sectors, radians mod pi
+};
+
+class CornerDetector {
+ public:
+  explicit CornerDetector(CornerDetectorOptions options = {});
+
+  // All corners of a CV_8UC1 image. Throws InputError for an empty image or a
+  // wrong type; an image smaller than the rings allow gives no corners.
+  std::vector<Corner> detect(const cv::Mat& grey) const;
+
+  // The corner nearest `guess` within search_radius_px, refined and verified
+  // by the ring test, or nothing. For tracking: no full-image pass.
+  std::optional<Corner> detectNear(const cv::Mat& grey, cv::Point2f guess,
+                                   float search_radius_px) const;
+
+  const CornerDetectorOptions& options() const noexcept { return options_; }
+
+ private:
+  std::optional<Corner> refineAndVerify(const cv::Mat& grey, cv::Point2f start) const;
+  CornerDetectorOptions options_;
+  RingSampler rings_;
+  RingSampler candidate_rings_;  // the quick test of pre-filter candidates
+  SubpixelRefiner refiner_;
+};
+
+// A corner seen in the raw half, expressed in view coordinates (position and
+// angles mirrored when the view is flipped).
+Corner toView(const Corner& raw_corner, const ViewHalf& view);
+
+// Detects on the raw half and returns corners in view coordinates.
+std::vector<Corner> detectInView(const CornerDetector& detector, const ViewHalf& view);
+
+}  // namespace onetip::vision

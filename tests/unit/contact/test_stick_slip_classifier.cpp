@@ -1,0 +1,86 @@
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+
+#include "contact/stick_slip_classifier.hpp"
+#include "core/error.hpp"
+#include "synthetic_field.hpp"
+
+using namespace onetip;
+using contact::MarkerLabel;
+using contact::StickSlipClassifier;
+
+namespace {
+
+MarkerField moved(const MarkerField& f, const Eigen::Isometry3d& T) {
+  MarkerField out = f;
+  for (auto& p : out.position) p = T * p;
+  return out;
+}
+
+Eigen::Isometry3d motion(double x, double yaw_deg) {
+  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+  T.linear() = Eigen::AngleAxisd(yaw_deg * 3.14159265358979 / 180, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  T.translation() = Eigen::Vector3d(x, 0, -0.1);
+  return T;
+}
+
+}  // namespace
+
+TEST(StickSlipClassifier, RigidMotionSticksSlidingMarkersSlipAndReturnAfterTheHold) {
+  const MarkerField rest = synth::flatGrid(5, 5);
+  std::vector<int> all(25);
+  for (int i = 0; i < 25; ++i) all[static_cast<size_t>(i)] = i;
+  const std::vector<Eigen::Vector3d> up(25, Eigen::Vector3d::UnitZ());
+  contact::StickSlipOptions o;
+  o.stick_hold_frames = 3;
+  StickSlipClassifier c(o);
+  c.reset(25);
+  c.anchorNew(all, rest, Eigen::Isometry3d::Identity());
+
+  // Frame 1: the finger moved; marker 0 stayed 0.1 mm behind (slid tangentially).
+  const Eigen::Isometry3d T1 = motion(0.3, 2);
+  MarkerField f1 = moved(rest, T1);
+  f1.position[0] -= Eigen::Vector3d(0.1, 0, 0);
+  EXPECT_EQ(c.classify(f1, up, T1), 1);
+  EXPECT_EQ(c.label(0), MarkerLabel::slip);
+  for (int i = 1; i < 25; ++i) EXPECT_EQ(c.label(i), MarkerLabel::stick);
+
+  // Marker 12 lifts off the finger (normal offset): detached, not slip.
+  MarkerField f2 = moved(rest, T1);
+  f2.position[0] -= Eigen::Vector3d(0.1, 0, 0);
+  f2.position[12] += Eigen::Vector3d(0, 0, 0.1);
+  c.classify(f2, up, T1);
+  EXPECT_EQ(c.label(12), MarkerLabel::detached);
+
+  // Marker 0 has moved with the finger since frame 1 (re-anchored there): frame 2
+  // was its first quiet frame; it sticks again at the third (stick_hold_frames).
+  EXPECT_EQ(c.label(0), MarkerLabel::slip);
+  c.classify(f2, up, T1);
+  EXPECT_EQ(c.label(0), MarkerLabel::slip);
+  c.classify(f2, up, T1);
+  EXPECT_EQ(c.label(0), MarkerLabel::stick);
+}
+
+TEST(StickSlipClassifier, RetainForgetsMarkersLeavingTheRegion) {
+  const MarkerField rest = synth::flatGrid(3, 3);
+  StickSlipClassifier c;
+  c.reset(9);
+  c.anchorNew({0, 1, 2, 3}, rest, Eigen::Isometry3d::Identity());
+  MarkerField now = rest;
+  now.valid[1] = 0;
+  c.retain({0, 1, 3}, now);
+  EXPECT_EQ(c.label(0), MarkerLabel::stick);
+  EXPECT_EQ(c.label(1), MarkerLabel::outside);  // lost
+  EXPECT_EQ(c.label(2), MarkerLabel::outside);  // left the region
+  EXPECT_EQ(c.withLabel(MarkerLabel::stick), (std::vector<int>{0, 3}));
+}
+
+TEST(StickSlipClassifier, OptionsAreValidated) {
+  contact::StickSlipOptions o;
+  o.slip_threshold_mm = 0;
+  EXPECT_THROW(StickSlipClassifier{o}, InputError);
+  o = {};
+  o.stick_hold_frames = 0;
+  EXPECT_THROW(StickSlipClassifier{o}, InputError);
+}

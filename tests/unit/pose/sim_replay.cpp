@@ -1,0 +1,81 @@
+#include "sim_replay.hpp"
+
+#include <random>
+
+#include "sim/simulator.hpp"
+
+namespace onetip::poseval {
+
+sim::Scenario sampleScenario(const std::string& name) {
+  return sim::loadScenario(std::string(ONETIP_SOURCE_DIR) + "/samples/scenarios/" + name + ".yaml");
+}
+
+namespace {
+
+MarkerField perturbed(const MarkerField& exact, double noise_mm, double drop_fraction, std::mt19937& rng) {
+  MarkerField out = exact;
+  std::normal_distribution<double> noise(0.0, noise_mm > 0 ? noise_mm : 1.0);
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  for (int i = 0; i < out.size(); ++i) {
+    const size_t k = static_cast<size_t>(i);
+    if (noise_mm > 0) out.position[k] += Eigen::Vector3d(noise(rng), noise(rng), noise(rng));
+    if (drop_fraction > 0 && uniform(rng) < drop_fraction) out.valid[k] = 0;
+  }
+  return out;
+}
+
+}  // namespace
+
+Recording record(const sim::Scenario& scenario, const ReplayOptions& options) {
+  sim::Simulator simulator(scenario);
+  std::mt19937 rng(options.seed);
+  Recording out;
+  out.rest = perturbed(simulator.restMarkers(), options.noise_mm, 0.0, rng);
+  while (!simulator.done()) {
+    const sim::GroundTruthFrame& f = simulator.next();
+    out.frames.push_back(perturbed(f.markers, options.noise_mm, options.drop_fraction, rng));
+    out.truth.push_back(f);
+  }
+  return out;
+}
+
+std::vector<ReplayFrame> track(const Recording& recording, const input::PoseTrackerOptions& options) {
+  input::PoseTracker tracker(options);
+  std::vector<ReplayFrame> frames;
+  for (size_t k = 0; k < recording.frames.size(); ++k) {
+    const sim::GroundTruthFrame& f = recording.truth[k];
+    const MarkerField& now = recording.frames[k];
+    const input::TrackerResult r = tracker.update(now, recording.rest, f.t);
+    ReplayFrame out;
+    out.t = f.t;
+    out.gt_contact = f.in_contact;
+    out.gt_state = f.state;
+    out.gt = f.input;
+    out.gt_contact_markers = f.contact;
+    out.gt_slip = f.slip;
+    out.contact = r.contact;
+    out.state = r.state;
+    out.raw = r.raw;
+    out.composed = r.composed;
+    out.euler_sum = r.euler_sum;
+    out.out_of_range = r.out_of_range;
+    out.model = r.step.model;
+    out.regions = static_cast<int>(r.field.regions.size());
+    out.region.assign(static_cast<size_t>(now.size()), 0);
+    out.slip.assign(static_cast<size_t>(now.size()), 0);
+    if (r.step.active) {
+      for (int id : r.field.regions[static_cast<size_t>(r.step.region)].markers) out.region[static_cast<size_t>(id)] = 1;
+      for (size_t i = 0; i < r.step.labels.size(); ++i)
+        out.slip[i] = r.step.labels[i] == contact::MarkerLabel::slip ? 1 : 0;
+    }
+    for (const auto& e : r.events) out.events.push_back(e.type);
+    frames.push_back(std::move(out));
+  }
+  return frames;
+}
+
+std::vector<ReplayFrame> replay(const sim::Scenario& scenario, const ReplayOptions& options) {
+  return track(record(scenario, options), options.tracker);
+}
+
+}  // namespace onetip::poseval
