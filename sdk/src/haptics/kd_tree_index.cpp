@@ -40,8 +40,7 @@ struct StandardisedL2 {
 };
 
 // Keeps the k best rows by (distance, id) in a sorted array. The tree holds
-// distinct vectors; each offers its rows (ascending ids) in turn. Seed rows
-// (added first) may be offered again by the tree: a row already held is skipped.
+// distinct vectors; each offers its rows (ascending ids) in turn.
 class TieAwareResultSet {
  public:
   TieAwareResultSet(Neighbor* slots, size_t capacity, const std::vector<std::uint32_t>& group_start,
@@ -59,14 +58,11 @@ class TieAwareResultSet {
       if (!addRow(dist, group_rows_[g])) break;
     return true;
   }
-  // false when the row is not among the best so far (nor are the rows after it
-  // in its group, which tie with it and have larger ids).
+
+ private:
   bool addRow(double dist, std::uint32_t id) {
     const Neighbor candidate{id, dist};
     if (full() && !closerThan(candidate, slots_[capacity_ - 1])) return false;
-    if (seeded_)
-      for (size_t j = 0; j < count_; ++j)
-        if (slots_[j].id == id) return true;
     size_t i = full() ? capacity_ - 1 : count_++;
     while (i > 0 && closerThan(candidate, slots_[i - 1])) {
       slots_[i] = slots_[i - 1];
@@ -75,15 +71,12 @@ class TieAwareResultSet {
     slots_[i] = candidate;
     return true;
   }
-  void markSeeded() { seeded_ = true; }
 
- private:
   Neighbor* slots_;
   size_t capacity_;
   const std::vector<std::uint32_t>& group_start_;
   const std::vector<std::uint32_t>& group_rows_;
   size_t count_ = 0;
-  bool seeded_ = false;
 };
 
 using Tree = nanoflann::KDTreeSingleIndexAdaptor<StandardisedL2, PointRows, -1, std::uint32_t>;
@@ -178,16 +171,10 @@ void KdTreeIndex::storeInTreeOrder(Impl& impl) {
 
 KdTreeIndex::~KdTreeIndex() = default;
 
-void KdTreeIndex::search(const float* query, int k, std::vector<Neighbor>& out,
-                         const std::vector<Neighbor>& seeds) const {
+void KdTreeIndex::search(const float* query, int k, std::vector<Neighbor>& out) const {
   const size_t want = std::min(static_cast<size_t>(std::max(k, 1)), size());
   out.resize(want);
   TieAwareResultSet result(out.data(), want, impl_->group_start, impl_->group_rows);
-  if (!seeds.empty()) {
-    result.markSeeded();
-    for (const Neighbor& s : seeds)
-      if (s.id < size()) result.addRow(squaredDistance(query, point(s.id), dims()), s.id);
-  }
   impl_->tree->findNeighbors(result, query, nanoflann::SearchParams());
 }
 

@@ -24,7 +24,7 @@
 namespace onetip::haptics {
 
 struct KdTreeOptions {
-  int leaf_size = 12;   // points per leaf (nanoflann's leaf_max_size), 1..1024
+  int leaf_size = 24;   // points per leaf (nanoflann's leaf_max_size), 1..1024
   void validate() const;  // throws InputError naming the bad field
 };
 
@@ -38,11 +38,7 @@ class KdTreeIndex {
 
   // The min(k, size()) nearest rows to `query` (dims floats), closest first.
   // `out` is resized; no allocation once it has held k neighbours. k >= 1.
-  // `seeds` (e.g. the previous query's neighbours, which a smooth stream of
-  // queries keeps close) are scored first, so the search starts with a tight
-  // bound; the result is the same with or without them. `out` must not alias
-  // `seeds`.
-  void search(const float* query, int k, std::vector<Neighbor>& out, const std::vector<Neighbor>& seeds = {}) const;
+  void search(const float* query, int k, std::vector<Neighbor>& out) const;
 
   size_t size() const noexcept;          // rows
   size_t distinctSize() const noexcept;  // distinct vectors in the tree

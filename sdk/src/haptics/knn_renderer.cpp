@@ -24,8 +24,7 @@ KnnRenderer::KnnRenderer(const TactileDataset& dataset, const KdTreeOptions& tre
 RenderResult KnnRenderer::render(const double* s, int n) const {
   if (n < 1) throw InputError("neighbors: must be at least 1");
   space_.apply(s, query_.data());
-  previous_.swap(found_);
-  index_.search(query_.data(), n, found_, previous_);
+  index_.search(query_.data(), n, found_);
   return combine(found_);
 }
 

@@ -11,10 +11,8 @@
 // the plain mean of the commands of the rows at that distance. n = 1 is the plain nearest neighbour (Eq. 3). Commands are in
 // degrees; the result stays inside the convex hull of the dataset commands.
 //
-// render() reuses internal buffers and seeds each search with the previous
-// query's neighbours (kd_tree_index.hpp: faster on a smooth stream of queries,
-// same result), so one renderer must not be used from two threads at once
-// (build one per thread; building is cheap next to loading).
+// render() reuses internal buffers, so one renderer must not be used from two
+// threads at once (build one per thread; building is cheap next to loading).
 #pragma once
 
 #include <array>
@@ -58,7 +56,6 @@ class KnnRenderer {
   KdTreeIndex index_;
   mutable std::vector<float> query_;
   mutable std::vector<Neighbor> found_;
-  mutable std::vector<Neighbor> previous_;  // the last query's neighbours: seeds of the next search
 };
 
 }  // namespace onetip::haptics

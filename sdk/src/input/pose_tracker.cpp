@@ -1,6 +1,8 @@
 #include "input/pose_tracker.hpp"
 
 #include <algorithm>
+#include <chrono>
+#include <chrono>
 #include <cmath>
 #include <string>
 
@@ -58,12 +60,17 @@ void PoseTracker::fillOutputs(TrackerResult& r) {
 TrackerResult PoseTracker::update(const MarkerField& now_S, const MarkerField& rest_S, double t) {
   TrackerResult r;
   r.t = t;
+  const auto contact_start = std::chrono::steady_clock::now();
+  const auto start = std::chrono::steady_clock::now();
   r.field = analyzer_.analyze(now_S, rest_S);
+  r.contact_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  r.contact_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - contact_start).count();
   if (r.field.status == contact::ContactFieldStatus::too_few_markers) {
     TrackerResult held = last_;
     held.t = t;
     held.held = true;
     held.field = std::move(r.field);
+    held.contact_ms = r.contact_ms;
     held.events.clear();
     emit(held, EventType::error,
          "too few valid markers (" + std::to_string(held.field.valid_markers) + "): output held");

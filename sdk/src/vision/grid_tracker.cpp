@@ -1,6 +1,7 @@
 #include "vision/grid_tracker.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <numeric>
 
@@ -152,10 +153,12 @@ GridResult GridTracker::track(const ViewHalf& view, const CornerDetector& detect
   if (view.raw.empty() || view.raw.type() != CV_8UC1) throw InputError("grid tracker: view must be a non-empty CV_8UC1 image");
   const Prediction pred = predict();
   ViewMarkers candidates(pattern_);
+  const auto detect_start = std::chrono::steady_clock::now();
   for (int id = 0; id < pattern_.count(); ++id) {
     const size_t i = static_cast<size_t>(id);
     if (auto c = detector.detectNear(view.raw, view.toRaw(pred.point[i]), pred.radius[i])) candidates.set(id, view.toView(c->pt));
   }
+  double detect_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - detect_start).count();
   if (candidates.count() < pattern_.count()) {
     // Detect in the region of the lost markers (raw pixels), for recovery.
     cv::Rect2f box;
@@ -171,7 +174,9 @@ GridResult GridTracker::track(const ViewHalf& view, const CornerDetector& detect
                                   cv::Point(static_cast<int>(box.br().x + reach), static_cast<int>(box.br().y + reach))) &
                          cv::Rect(0, 0, view.width(), view.height());
     if (roi.area() > 0) {
+      const auto roi_start = std::chrono::steady_clock::now();
       std::vector<Corner> corners = detector.detect(view.raw(roi));
+      detect_ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - roi_start).count();
       for (Corner& c : corners) {
         c.pt += cv::Point2f(static_cast<float>(roi.x), static_cast<float>(roi.y));
         c = toView(c, view);
@@ -179,7 +184,9 @@ GridResult GridTracker::track(const ViewHalf& view, const CornerDetector& detect
       recover(corners, view, pred, candidates);
     }
   }
-  return finish(pred, std::move(candidates));
+  GridResult result = finish(pred, std::move(candidates));
+  result.detect_ms = detect_ms;
+  return result;
 }
 
 void GridTracker::recover(const std::vector<Corner>& corners, const ViewHalf& view, const Prediction& pred,

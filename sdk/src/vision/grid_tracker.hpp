@@ -56,6 +56,7 @@ struct GridResult {
   int rejected = 0;      // matched but rejected as outliers
   int recovered = 0;     // found again after being lost
   std::string message;   // why, when status is not Ok
+  double detect_ms = 0;  // time spent detecting corners inside track(view, detector)
   bool ok() const noexcept { return status == GridStatus::Ok; }
 };
 

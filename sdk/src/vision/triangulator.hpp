@@ -14,7 +14,10 @@
 // With isotropic pixel noise the optimal method is the maximum-likelihood
 // estimate; measured on the simulated rig (tests/unit/vision/
 // test_triangulator.cpp) both give the same 3-D error to within a few per
-// cent, optimal never worse, so it is the default.
+// cent (0.00648 vs 0.00647 mm RMS at 0.1 px noise), and on the simulator's
+// press scenario the same 0.0010 mm RMS, but cv::correctMatches costs about
+// 10 ms per 17x17 frame against 0.18 ms for the midpoint: midpoint is the
+// default, optimal an option.
 // Output: a MarkerField in the left camera frame L (mm) with valid[id] set for
 // every id seen in both views whose reprojection error (distance between the
 // ideal pixel and the reprojected point, worst of the two views) is at most
@@ -36,7 +39,7 @@ namespace onetip::vision {
 enum class TriangulationMethod { midpoint, optimal };
 
 struct TriangulatorOptions {
-  TriangulationMethod method = TriangulationMethod::optimal;
+  TriangulationMethod method = TriangulationMethod::midpoint;
   double max_reprojection_px = 2.0;  // larger: a mismatched pair, rejected
   void validate() const;             // throws InputError naming the bad field
 };

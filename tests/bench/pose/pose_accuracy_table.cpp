@@ -6,7 +6,9 @@
 // Translation RMSE: mean over dx, dy, dz of press, slide_x, sweep_y within the
 // paper's range; rotation RMSE: the driven axis of twist, pitch, roll at 0.5 mm
 // depth within the working range. Time: median wall time per frame of contact
-// analysis + pose (one thread) over those replays.
+// analysis + pose (one thread) over those replays. For the noise sweep the
+// estimator is told the noise level (position_noise_mm = sigma, slip
+// threshold max(0.06, 5 sigma), robust scale max(0.03, 2.5 sigma)).
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -114,6 +116,10 @@ int main(int argc, char** argv) {
   for (double sigma : {0.0, 0.006, 0.012, 0.024, 0.048}) {
     ReplayOptions o;
     o.noise_mm = sigma;
+    // The estimator is told the front end's noise: thresholds scale with it.
+    o.tracker.pose.position_noise_mm = std::max(sigma, 0.001);
+    o.tracker.pose.stick_slip.slip_threshold_mm = std::max(0.06, 5 * sigma);
+    o.tracker.pose.robust_scale_mm = std::max(0.03, 2.5 * sigma);
     const Score s = evaluate(sample, o, input::Accumulation::composed);
     std::printf("noise %.3f  trans %.4f mm  rot %.3f deg  F1 %.3f\n", sigma, s.trans, s.rot, s.f1);
     noise.row({num(sigma), num(s.trans), num(s.rot), num(s.f1)});

@@ -1,0 +1,179 @@
+#include "pipeline/frame_processor.hpp"
+
+#include <chrono>
+
+#include "core/error.hpp"
+
+namespace onetip::pipeline {
+
+namespace {
+using Clock = std::chrono::steady_clock;
+double msSince(Clock::time_point t0) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+}
+
+// Why a frame cannot be split, or an empty string.
+std::string frameProblem(const cv::Mat& frame, const StereoCalibration& c) {
+  if (frame.empty()) return "empty frame";
+  if (frame.type() != CV_8UC1) return "frame is not 8-bit grey";
+  if (frame.cols != c.image_width || frame.rows != c.image_height)
+    return "frame is " + std::to_string(frame.cols) + "x" + std::to_string(frame.rows) + ", the calibration says " +
+           std::to_string(c.image_width) + "x" + std::to_string(c.image_height);
+  return {};
+}
+}  // namespace
+
+const char* toString(FrameStatus s) noexcept {
+  switch (s) {
+    case FrameStatus::ok: return "ok";
+    case FrameStatus::reference: return "reference";
+    case FrameStatus::lost: return "lost";
+    case FrameStatus::skipped: break;
+  }
+  return "skipped";
+}
+
+void FrameProcessorOptions::validate() const {
+  detector.validate();
+  tracker.validate();
+  triangulator.validate();
+  pose.validate();
+  if (min_markers < 3) throw InputError("frame processor: min_markers: must be at least 3");
+}
+
+struct FrameProcessor::Impl {
+  StereoCalibration calib;
+  MarkerPattern pattern;
+  FrameProcessorOptions options;
+  vision::CornerDetector detector;
+  vision::GridTracker left, right;
+  vision::Triangulator triangulator;
+  input::PoseTracker pose;
+  bool has_reference = false;
+  SensorFrame S;
+  MarkerField rest_S;
+
+  Impl(const StereoCalibration& c, const MarkerPattern& p, FrameProcessorOptions o)
+      : calib(c), pattern(p), options(std::move(o)), detector(options.detector), left(p, options.tracker),
+        right(p, options.tracker), triangulator(c, options.triangulator), pose(options.pose) {}
+
+  // Finds and identifies markers in both views. The rest frame is searched
+  // whole and its grid built from the corners' links; later frames are
+  // searched only near each marker's prediction (and around lost ones).
+  bool findMarkers(const vision::StereoViews& views, bool initialize, FrameResult& r, vision::ViewMarkers& ml,
+                   vision::ViewMarkers& mr) {
+    const auto t0 = Clock::now();
+    vision::GridResult gl, gr;
+    if (initialize) {
+      std::vector<vision::Corner> cl = detector.detect(views.left.raw), cr = detector.detect(views.right.raw);
+      for (auto& c : cl) c = vision::toView(c, views.left);
+      for (auto& c : cr) c = vision::toView(c, views.right);
+      r.times.detect = msSince(t0);
+      const auto t1 = Clock::now();
+      gl = left.initialize(cl, views.left);
+      gr = right.initialize(cr, views.right);
+      r.times.track = msSince(t1);
+    } else {
+      gl = left.track(views.left, detector);
+      gr = right.track(views.right, detector);
+      r.times.detect = gl.detect_ms + gr.detect_ms;
+      r.times.track = msSince(t0) - r.times.detect;
+    }
+    r.found_left = gl.found;
+    r.found_right = gr.found;
+    if (!gl.ok() || !gr.ok()) {
+      r.status = initialize ? FrameStatus::skipped : FrameStatus::lost;
+      r.message = std::string(initialize ? "rest frame: " : "") + (gl.ok() ? "right view: " + gr.message
+                                                                            : "left view: " + gl.message);
+      return false;
+    }
+    ml = gl.markers;
+    mr = gr.markers;
+    return true;
+  }
+};
+
+FrameProcessor::FrameProcessor(const StereoCalibration& calib, const MarkerPattern& pattern,
+                               FrameProcessorOptions options) {
+  calib.validate();
+  pattern.validate();
+  options.validate();
+  impl_ = std::make_unique<Impl>(calib, pattern, std::move(options));
+}
+
+FrameProcessor::~FrameProcessor() = default;
+
+FrameResult FrameProcessor::setReference(const cv::Mat& frame, double t) {
+  Impl& m = *impl_;
+  const auto start = Clock::now();
+  FrameResult r;
+  r.t = t;
+  if (std::string why = frameProblem(frame, m.calib); !why.empty()) {
+    r.message = why;
+    return r;
+  }
+  const vision::StereoViews views = vision::splitViews(frame, m.calib);
+  vision::ViewMarkers ml, mr;
+  if (!m.findMarkers(views, true, r, ml, mr)) return r;
+  auto t0 = Clock::now();
+  const vision::TriangulationResult tri = m.triangulator.triangulate(ml, mr);
+  r.times.triangulate = msSince(t0);
+  if (tri.markers.validCount() < m.options.min_markers) {
+    r.status = FrameStatus::skipped;
+    r.message = "rest frame: only " + std::to_string(tri.markers.validCount()) + " markers triangulated";
+    return r;
+  }
+  m.S = SensorFrame::fromRestMarkers(tri.markers);
+  m.rest_S = m.S.toSensor(tri.markers);
+  m.has_reference = true;
+  m.pose.reset();
+  r.markers = m.rest_S;
+  r.status = FrameStatus::reference;
+  r.times.process = msSince(start);
+  return r;
+}
+
+FrameResult FrameProcessor::process(const cv::Mat& frame, double t) {
+  Impl& m = *impl_;
+  if (!m.has_reference) return setReference(frame, t);
+  const auto start = Clock::now();
+  FrameResult r;
+  r.t = t;
+  if (std::string why = frameProblem(frame, m.calib); !why.empty()) {
+    r.message = why;
+    return r;
+  }
+  const vision::StereoViews views = vision::splitViews(frame, m.calib);
+  vision::ViewMarkers ml, mr;
+  if (!m.findMarkers(views, false, r, ml, mr)) {
+    r.times.process = msSince(start);
+    return r;
+  }
+  auto t0 = Clock::now();
+  const vision::TriangulationResult tri = m.triangulator.triangulate(ml, mr);
+  r.markers = m.S.toSensor(tri.markers);
+  r.times.triangulate = msSince(t0);
+  if (r.markers.validCount() < m.options.min_markers) {
+    r.status = FrameStatus::lost;
+    r.message = "only " + std::to_string(r.markers.validCount()) + " markers triangulated";
+    r.times.process = msSince(start);
+    return r;
+  }
+  t0 = Clock::now();
+  r.pose = m.pose.update(r.markers, m.rest_S, t);
+  const double contact_and_pose = msSince(t0);
+  r.times.contact = r.pose.contact_ms;
+  r.times.pose = contact_and_pose - r.pose.contact_ms;
+  r.status = FrameStatus::ok;
+  r.times.process = msSince(start);
+  return r;
+}
+
+void FrameProcessor::rezero() { impl_->pose.reset(); }
+bool FrameProcessor::hasReference() const { return impl_->has_reference; }
+const MarkerField& FrameProcessor::restMarkers() const { return impl_->rest_S; }
+const SensorFrame& FrameProcessor::sensorFrame() const { return impl_->S; }
+const StereoCalibration& FrameProcessor::calibration() const { return impl_->calib; }
+const MarkerPattern& FrameProcessor::pattern() const { return impl_->pattern; }
+
+}  // namespace onetip::pipeline

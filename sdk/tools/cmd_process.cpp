@@ -1,0 +1,124 @@
+// `onetip process`: the sensing pipeline over a frame source, writing pose.csv
+// (and markers.csv, timing.csv) per CONVENTIONS.md.
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <opencv2/imgcodecs.hpp>
+
+#include "capture/open_frame_source.hpp"
+#include "command.hpp"
+#include "core/csv_table.hpp"
+#include "core/error.hpp"
+#include "pipeline/frame_processor.hpp"
+
+namespace onetip::tools {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+std::vector<std::string> poseRow(std::int64_t frame, const pipeline::FrameResult& r) {
+  const input::TrackerResult& p = r.pose;
+  const Input6& v = p.raw;
+  return {std::to_string(frame), p.contact ? "1" : "0", std::string(toString(p.contact ? p.state : ContactState::none)),
+          formatNumber(v.dx), formatNumber(v.dy), formatNumber(v.dz), formatNumber(v.yaw), formatNumber(v.pitch),
+          formatNumber(v.roll)};
+}
+
+int runProcess(const Args& args) {
+  const StereoCalibration calib = loadCalibration(args.get("calib"));
+  const MarkerPattern pattern = loadPattern(args.get("pattern"));
+  auto source = capture::openFrameSource(args.get("input"));
+  pipeline::FrameProcessor processor(calib, pattern);
+
+  if (auto ref = args.optional("reference")) {
+    const cv::Mat img = cv::imread(*ref, cv::IMREAD_GRAYSCALE);
+    if (img.empty()) throw InputError("--reference " + *ref + ": not a readable image");
+    const pipeline::FrameResult r = processor.setReference(img);
+    if (r.status != pipeline::FrameStatus::reference) throw InputError("--reference " + *ref + ": " + r.message);
+  }
+
+  CsvWriter pose(args.get("out"), {"frame", "contact", "state", "dx", "dy", "dz", "yaw", "pitch", "roll"});
+  std::unique_ptr<CsvWriter> markers, timing;
+  if (auto p = args.optional("markers")) markers = std::make_unique<CsvWriter>(*p, std::vector<std::string>{"frame", "id", "x", "y", "z"});
+  if (auto p = args.optional("timing")) timing = std::make_unique<CsvWriter>(*p, std::vector<std::string>{"frame", "stage", "ms"});
+
+  int processed = 0, skipped = 0, lost = 0, errors = 0, consecutive_errors = 0;
+  std::vector<double> process_ms;
+  const bool quiet = args.has("quiet");
+  for (;;) {
+    const auto t0 = Clock::now();
+    capture::Frame frame = source->next();
+    const double decode_ms = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+    if (frame.status == capture::FrameStatus::end) break;
+    if (frame.status == capture::FrameStatus::error) {
+      ++errors;
+      std::cerr << "onetip process: frame source: " << frame.message << "\n";
+      if (++consecutive_errors >= 50) throw InputError(args.get("input") + ": the source keeps failing: " + frame.message);
+      continue;
+    }
+    consecutive_errors = 0;
+    if (frame.status == capture::FrameStatus::skipped) {
+      ++skipped;
+      std::cerr << "onetip process: frame " << frame.index << " skipped: " << frame.message << "\n";
+      continue;
+    }
+    const bool first = !processor.hasReference();
+    const pipeline::FrameResult r = processor.process(frame.grey, frame.timestamp_s);
+    if (r.status == pipeline::FrameStatus::skipped || r.status == pipeline::FrameStatus::lost) {
+      // Without a rest state nothing that follows can be measured: that is bad input.
+      if (first) throw InputError(args.get("input") + ": frame " + std::to_string(frame.index) + ": " + r.message);
+      (r.status == pipeline::FrameStatus::lost ? lost : skipped) += 1;
+      std::cerr << "onetip process: frame " << frame.index << " " << pipeline::toString(r.status) << ": " << r.message << "\n";
+      continue;
+    }
+    ++processed;
+    pose.row(poseRow(frame.index, r));
+    const std::string k = std::to_string(frame.index);
+    if (markers)
+      for (int id = 0; id < r.markers.size(); ++id)
+        if (r.markers.valid[static_cast<size_t>(id)]) {
+          const auto& p = r.markers.position[static_cast<size_t>(id)];
+          markers->row({k, std::to_string(id), formatNumber(p.x()), formatNumber(p.y()), formatNumber(p.z())});
+        }
+    if (timing)
+      for (const auto& [stage, ms] : std::vector<std::pair<const char*, double>>{
+               {"decode", decode_ms}, {"detect", r.times.detect}, {"track", r.times.track},
+               {"triangulate", r.times.triangulate}, {"contact", r.times.contact}, {"pose", r.times.pose},
+               {"process", r.times.process}})
+        timing->row({k, stage, formatNumber(ms, 4)});
+    process_ms.push_back(r.times.process);
+    if (!quiet) {
+      const Input6& v = r.pose.raw;
+      std::printf("frame %5lld  %-12s dx %7.3f dy %7.3f dz %7.3f  yaw %7.2f pitch %7.2f roll %7.2f  (%d/%d markers)\n",
+                  static_cast<long long>(frame.index),
+                  r.status == pipeline::FrameStatus::reference ? "rest" : std::string(toString(r.pose.contact ? r.pose.state : ContactState::none)).c_str(),
+                  v.dx, v.dy, v.dz, v.yaw, v.pitch, v.roll, r.markers.validCount(), pattern.count());
+    }
+  }
+  if (processed == 0) throw InputError(args.get("input") + ": no usable frame");
+  pose.commit();
+  if (markers) markers->commit();
+  if (timing) timing->commit();
+  std::nth_element(process_ms.begin(), process_ms.begin() + static_cast<long>(process_ms.size() / 2), process_ms.end());
+  std::printf("processed %d frames (%d skipped, %d lost, %d source errors); median processing %.2f ms per frame\n",
+              processed, skipped, lost, errors, process_ms[process_ms.size() / 2]);
+  return 0;
+}
+
+const CommandRegistrar reg{{
+    "process",
+    "Run the sensing pipeline over a frame source and write the 6-D pose per frame (pose.csv), optionally the 3-D "
+    "markers (S, mm) and per-stage timings.",
+    {{"calib", "calibration file (CONVENTIONS.md)", false, true},
+     {"pattern", "marker pattern file", false, true},
+     {"input", "frames: a folder of PNGs, a video file, v4l2:/dev/videoN or sim:SCENARIO.yaml", false, true},
+     {"out", "pose.csv to write: frame,contact,state,dx,dy,dz,yaw,pitch,roll", false, true},
+     {"markers", "markers.csv to write: frame,id,x,y,z (S, mm)", false, false},
+     {"reference", "rest-state image (default: the first frame)", false, false},
+     {"timing", "timing.csv to write: frame,stage,ms", false, false},
+     {"quiet", "do not print the per-frame 6-D stream", true, false}},
+    runProcess}};
+
+}  // namespace
+}  // namespace onetip::tools
