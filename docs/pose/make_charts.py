@@ -52,20 +52,27 @@ def solvers_chart(data, out):
     plt.close(fig)
 
 
+def panel(ax, x, y, ylabel, xlabel, target=None, target_label=None):
+    ax.plot(x, y, "o-")
+    if target is not None:
+        ax.axhline(target, color="r", ls="--", lw=0.8, label=target_label)
+        if target_label:
+            ax.legend(fontsize=8)
+    ax.set_ylabel(ylabel)
+    ax.set_xlabel(xlabel)
+    ax.grid(True, alpha=0.3)
+
+
 def density_chart(data, out):
     table = rows(os.path.join(data, "density.csv"))
     n = [int(r["markers"]) for r in table]
     fig, ax = plt.subplots(1, 3, figsize=(12, 3.6))
-    ax[0].plot(n, [float(r["trans_rmse_mm"]) for r in table], "o-")
-    ax[0].set_ylabel("translation RMSE (mm)")
-    ax[1].plot(n, [float(r["rot_rmse_deg"]) for r in table], "o-")
-    ax[1].set_ylabel("rotation RMSE (deg)")
-    ax[2].plot(n, [float(r["ms_per_frame"]) for r in table], "o-")
-    ax[2].set_ylabel("median ms per frame")
+    xlabel = "markers per side (same 19.2 mm pad)"
+    panel(ax[0], n, [float(r["trans_rmse_mm"]) for r in table], "translation RMSE (mm)", xlabel, 0.05)
+    panel(ax[1], n, [float(r["rot_rmse_deg"]) for r in table], "rotation RMSE (deg)", xlabel, 1.0)
+    panel(ax[2], n, [float(r["ms_per_frame"]) for r in table], "median ms per frame", xlabel, 0.5)
     for a in ax:
-        a.set_xlabel("markers per side (same 19.2 mm pad)")
         a.set_xticks(n)
-        a.grid(True, alpha=0.3)
     fig.suptitle("Marker density (noise 0.012 mm)")
     fig.tight_layout()
     fig.savefig(os.path.join(out, "accuracy_vs_density.png"), dpi=120)
@@ -76,20 +83,10 @@ def noise_chart(data, out):
     table = rows(os.path.join(data, "noise.csv"))
     s = [float(r["noise_mm"]) for r in table]
     fig, ax = plt.subplots(1, 3, figsize=(12, 3.6))
-    ax[0].plot(s, [float(r["trans_rmse_mm"]) for r in table], "o-")
-    ax[0].axhline(0.05, color="r", ls="--", lw=0.8, label="target 0.05 mm")
-    ax[0].set_ylabel("translation RMSE (mm)")
-    ax[0].legend(fontsize=8)
-    ax[1].plot(s, [float(r["rot_rmse_deg"]) for r in table], "o-")
-    ax[1].axhline(1.0, color="r", ls="--", lw=0.8, label="target 1 deg")
-    ax[1].set_ylabel("rotation RMSE (deg)")
-    ax[1].legend(fontsize=8)
-    ax[2].plot(s, [float(r["slip_f1"]) for r in table], "o-")
-    ax[2].axhline(0.9, color="r", ls="--", lw=0.8)
-    ax[2].set_ylabel("slip F1 (slides)")
-    for a in ax:
-        a.set_xlabel("marker noise, mm per axis")
-        a.grid(True, alpha=0.3)
+    xlabel = "marker noise, mm per axis"
+    panel(ax[0], s, [float(r["trans_rmse_mm"]) for r in table], "translation RMSE (mm)", xlabel, 0.05, "target 0.05 mm")
+    panel(ax[1], s, [float(r["rot_rmse_deg"]) for r in table], "rotation RMSE (deg)", xlabel, 1.0, "target 1 deg")
+    panel(ax[2], s, [float(r["slip_f1"]) for r in table], "slip F1 (slides)", xlabel, 0.9, "target 0.9")
     fig.suptitle("Measurement noise (17x17)")
     fig.tight_layout()
     fig.savefig(os.path.join(out, "accuracy_vs_noise.png"), dpi=120)

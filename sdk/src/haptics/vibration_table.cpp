@@ -25,13 +25,16 @@ SweepRecorder simulatedSweepRecorder(const PlatformKinematics& device) {
   };
 }
 
-namespace {
-void addWhiteNoise(std::vector<double>& y, double snr_db, std::mt19937_64& rng) {
+std::vector<double> withRecordingNoise(std::vector<double> y, double snr_db, std::uint64_t seed) {
   double power = 0.0;
   for (double v : y) power += v * v / static_cast<double>(y.size());
+  std::mt19937_64 rng(seed);
   std::normal_distribution<double> noise(0.0, std::sqrt(power / std::pow(10.0, snr_db / 10.0)));
   for (double& v : y) v += noise(rng);
+  return y;
 }
+
+namespace {
 
 std::string shortest(double v) {
   char buf[32];
@@ -55,11 +58,11 @@ VibrationTable VibrationTable::identify(const SweepRecorder& record, const Vibra
   table.per_motor_ = static_cast<int>(gridAngles(options.step_deg).size());
   const auto configurations = gridConfigurations(options.step_deg);
   const auto u = sweptSine(options.sweep);
-  std::mt19937_64 rng(options.seed);
   for (const auto& m : configurations) {
     std::vector<double> y = record(m, u);
     if (y.size() != u.size()) throw InputError("vibration table: the recorder returned a record of another length");
-    if (std::isfinite(options.recording_snr_db)) addWhiteNoise(y, options.recording_snr_db, rng);
+    if (std::isfinite(options.recording_snr_db))
+      y = withRecordingNoise(std::move(y), options.recording_snr_db, options.seed + table.entries_.size());
     table.entries_.push_back(identifyTransferFunction(u, y, options.identification).tf);
     if (progress) progress(table.entries_.size(), configurations.size());
   }

@@ -33,13 +33,16 @@ struct VibrationTableOptions {
   SweepOptions sweep;
   IdentificationOptions identification;
   double recording_snr_db = std::numeric_limits<double>::infinity();  // inf: clean records
-  std::uint64_t seed = 1;  // recording noise
+  std::uint64_t seed = 1;  // recording noise of entry i: seed + i
   void validate() const;   // throws InputError naming the bad field
 };
 
 // Plays `sweep` through the vibration path at the given servo angles and
 // returns what the AC channel records (same length).
 using SweepRecorder = std::function<std::vector<double>(const std::array<double, 3>&, const std::vector<double>&)>;
+
+// y plus white Gaussian noise of power mean(y^2) / 10^(snr_db / 10).
+std::vector<double> withRecordingNoise(std::vector<double> y, double snr_db, std::uint64_t seed);
 
 // The simulated recorder: the plant of vibration_plant.hpp at device.forward(m).
 SweepRecorder simulatedSweepRecorder(const PlatformKinematics& device);

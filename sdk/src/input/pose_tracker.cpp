@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <chrono>
 #include <cmath>
 #include <string>
 
@@ -61,9 +60,7 @@ TrackerResult PoseTracker::update(const MarkerField& now_S, const MarkerField& r
   TrackerResult r;
   r.t = t;
   const auto contact_start = std::chrono::steady_clock::now();
-  const auto start = std::chrono::steady_clock::now();
   r.field = analyzer_.analyze(now_S, rest_S);
-  r.contact_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   r.contact_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - contact_start).count();
   if (r.field.status == contact::ContactFieldStatus::too_few_markers) {
     TrackerResult held = last_;

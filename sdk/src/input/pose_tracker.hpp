@@ -53,7 +53,6 @@ struct TrackerResult {
   bool out_of_range = false;
   bool pressed = false;
   bool held = false;       // no decision this frame (too few markers): previous output repeated
-  double contact_ms = 0;   // wall time of the contact analysis in this update (for timing.csv)
   pose::PoseStep step;
   contact::ContactField field;
   std::vector<InputEvent> events;

@@ -31,7 +31,7 @@ void AdaptivePoseOptions::validate() const {
   };
   positive(macro_drift_mm, "macro_drift_mm");
   positive(macro_tilt_gate_deg, "macro_tilt_gate_deg");
-  positive(macro_relock_growth, "macro_relock_growth");
+  positive(macro_size_change, "macro_size_change");
   positive(macro_drift_ratio, "macro_drift_ratio");
   positive(macro_exit_lag_mm, "macro_exit_lag_mm");
   positive(robust_scale_mm, "robust_scale_mm");
@@ -201,7 +201,7 @@ void AdaptivePoseEstimator::checkMacroSlip(const contact::ContactField& field, c
   const Eigen::Isometry3d next = increment * pose_;
   const double size = static_cast<double>(region.markers.size());
   if (tiltBetween(next, old.pose) > options_.macro_tilt_gate_deg * kRadPerDeg ||
-      std::abs(size - old.region_size) > options_.macro_relock_growth * old.region_size)
+      std::abs(size - old.region_size) > options_.macro_size_change * old.region_size)
     return;
   // Where the footprint would be had it stayed fixed on the finger, and where it is.
   const auto [before, after] = commonFootprints(old, field, region.markers, now);

@@ -34,7 +34,7 @@
 //     the footprint leads the finger by ~20% of the travel in the simulator,
 //     at gross slip the stalled estimate loses all of it). T_k then catches
 //     up by the drift once and the centroid model takes over. No decision is
-//     taken while the region size changes by macro_relock_growth or the finger
+//     taken while the region size changes by macro_size_change or the finger
 //     tilts by macro_tilt_gate_deg within the window (rolling and pitching
 //     move the footprint over the finger legitimately).
 //  4. Safety: one frame's increment is limited to max_step_mm of motion of the
@@ -75,7 +75,7 @@ struct AdaptivePoseOptions {
   double macro_drift_mm = 0.15;         // footprint drift off the finger over the window...
   double macro_drift_ratio = 0.5;       // ...and this fraction of the footprint's travel
   double macro_tilt_gate_deg = 1.5;
-  double macro_relock_growth = 0.3;     // no decision while the region size changes this fraction
+  double macro_size_change = 0.3;     // no decision while the region size changes this fraction
   int macro_exit_window = 8;
   double macro_exit_lag_mm = 0.06;
   double max_step_mm = 1.5;

@@ -5,12 +5,16 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <random>
+
+#include "core/error.hpp"
 
 #include "haptics/platform_kinematics.hpp"
 #include "haptics/tf_identification.hpp"
 #include "haptics/vibration_channel.hpp"
 #include "haptics/vibration_plant.hpp"
+#include "haptics/vibration_table.hpp"
 
 using namespace onetip::haptics;
 
@@ -23,15 +27,6 @@ double worstErrorDb(const TransferFunction& fit, const TransferFunction& truth) 
   double worst = 0.0;
   for (double f = 20.0; f <= 800.0; f *= 1.02) worst = std::max(worst, std::abs(fit.gainDb(f) - truth.gainDb(f)));
   return worst;
-}
-
-std::vector<double> addNoise(std::vector<double> y, double snr_db, unsigned seed) {
-  double power = 0.0;
-  for (double v : y) power += v * v / static_cast<double>(y.size());
-  std::mt19937 rng(seed);
-  std::normal_distribution<double> noise(0.0, std::sqrt(power / std::pow(10.0, snr_db / 10.0)));
-  for (double& v : y) v += noise(rng);
-  return y;
 }
 
 }  // namespace
@@ -54,7 +49,7 @@ TEST(VibrationIdentification, NoisySweepAt30dBFitsWithin2dB) {
   unsigned seed = 1;
   for (const auto& m : kConfigurations) {
     const TransferFunction truth = vibrationPlant(device.forward(m));
-    const auto fit = identifyTransferFunction(u, addNoise(filterSignal(truth, u), 30.0, seed++));
+    const auto fit = identifyTransferFunction(u, withRecordingNoise(filterSignal(truth, u), 30.0, seed++));
     EXPECT_TRUE(fit.tf.stable());
     EXPECT_LT(worstErrorDb(fit.tf, truth), 2.0) << m[0] << "," << m[1] << "," << m[2];
   }
@@ -114,4 +109,50 @@ TEST(VibrationChannel, SwitchingConfigurationsMakesNoClick) {
     y_naive[k] = naive.process(x[k]);
   }
   EXPECT_GT(largestStep(y_naive, peak, peak + 60), own);
+}
+
+// Algorithm 1's table: every entry fitted within 1 dB of the plant at its own
+// configuration (clean records), lookups go to the entry nearest in every
+// motor (checked against a scan of all entries), and a saved table loads back
+// exactly; a damaged file is refused.
+TEST(VibrationTable, EntriesFitTheirPlantAndLookupPicksTheNearestConfiguration) {
+  const PlatformKinematics device;
+  VibrationTableOptions o;
+  o.step_deg = 55.0;  // 30, 85, 140 per motor: 27 entries
+  o.identification.max_iterations = 5;
+  const VibrationTable table = VibrationTable::identify(simulatedSweepRecorder(device), o);
+  ASSERT_EQ(table.size(), 27u);
+  for (size_t i = 0; i < table.size(); ++i)
+    EXPECT_LT(worstErrorDb(table.entry(i), vibrationPlant(device.forward(table.configuration(i)))), 1.0) << i;
+
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> angle(0.0, 220.0);  // also outside the servo range
+  for (int trial = 0; trial < 200; ++trial) {
+    const std::array<double, 3> m = {angle(rng), angle(rng), angle(rng)};
+    size_t nearest = 0;
+    double best = 1e300;
+    for (size_t i = 0; i < table.size(); ++i) {
+      const auto c = table.configuration(i);
+      double gap_sq = 0.0;  // squared distance to the entry, angles clamped to the grid
+      for (size_t k = 0; k < 3; ++k) gap_sq += std::pow(std::clamp(m[k], 30.0, 140.0) - c[k], 2);
+      if (gap_sq < best) best = gap_sq, nearest = i;
+    }
+    EXPECT_EQ(table.index(m), nearest) << m[0] << "," << m[1] << "," << m[2];
+    EXPECT_EQ(&table.lookup(m), &table.entry(nearest));
+  }
+
+  const std::string path = ::testing::TempDir() + "/vibration_table.csv";
+  table.save(path);
+  const VibrationTable loaded = VibrationTable::load(path);
+  ASSERT_EQ(loaded.size(), table.size());
+  for (size_t i = 0; i < table.size(); ++i) {
+    EXPECT_EQ(loaded.entry(i).a, table.entry(i).a);
+    EXPECT_EQ(loaded.entry(i).b, table.entry(i).b);
+  }
+  {
+    std::ifstream in(path);
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::ofstream(path, std::ios::trunc) << text.substr(0, text.size() / 2);  // rows cut off
+  }
+  EXPECT_THROW(VibrationTable::load(path), onetip::InputError);
 }
