@@ -175,5 +175,7 @@ const MarkerField& FrameProcessor::restMarkers() const { return impl_->rest_S; }
 const SensorFrame& FrameProcessor::sensorFrame() const { return impl_->S; }
 const StereoCalibration& FrameProcessor::calibration() const { return impl_->calib; }
 const MarkerPattern& FrameProcessor::pattern() const { return impl_->pattern; }
+const vision::ViewMarkers& FrameProcessor::leftViewMarkers() const { return impl_->left.current(); }
+const vision::ViewMarkers& FrameProcessor::rightViewMarkers() const { return impl_->right.current(); }
 
 }  // namespace onetip::pipeline

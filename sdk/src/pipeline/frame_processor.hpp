@@ -81,6 +81,10 @@ class FrameProcessor {
   const SensorFrame& sensorFrame() const;     // S from L
   const StereoCalibration& calibration() const;
   const MarkerPattern& pattern() const;
+  // Each view's tracked 2-D markers after the last frame (view pixels, after
+  // the view's flip; valid where measured in that frame), e.g. for display.
+  const vision::ViewMarkers& leftViewMarkers() const;
+  const vision::ViewMarkers& rightViewMarkers() const;
 
  private:
   struct Impl;

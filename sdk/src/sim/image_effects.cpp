@@ -155,8 +155,9 @@ void applyImageEffects(cv::Mat1f& grey, const cv::Mat1b& pad, const ImageEffects
 void developView(cv::Mat1f& grey, const std::function<cv::Mat1b()>& pad_mask, const ImageEffects& e,
                  std::uint64_t frame_seed, int view_index, bool mirror, cv::Mat out) {
   const std::uint64_t seed = 2 * frame_seed + static_cast<std::uint64_t>(view_index);
+  const std::uint64_t layout = 2 * e.layout_seed + static_cast<std::uint64_t>(view_index);
   const bool needs_pad = e.occlusion_fraction > 0 || e.dust_blobs > 0 || e.specular_spots > 0;
-  applyImageEffects(grey, needs_pad ? pad_mask() : cv::Mat1b(), e, seed);
+  applyImageEffects(grey, needs_pad ? pad_mask() : cv::Mat1b(), e, layout);
   exposeToSensor(grey, e.noise_sigma, seed, mirror, out);
 }
 

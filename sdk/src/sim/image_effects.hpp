@@ -35,8 +35,9 @@ void applyImageEffects(cv::Mat1f& grey, const cv::Mat1b& pad, const ImageEffects
 void exposeToSensor(const cv::Mat1f& grey, double noise_sigma, std::uint64_t seed, bool mirror, cv::Mat out);
 
 // Both steps for view `view_index` (0 left, 1 right) of a frame: applyImageEffects
-// (asking pad_mask() only if needed) then exposeToSensor into `out`, seeded
-// by the frame's seed and the view.
+// (asking pad_mask() only if needed), seeded by effects.layout_seed and the
+// view so static effects stay put, then exposeToSensor into `out`, whose noise
+// is seeded by the frame's seed and the view.
 void developView(cv::Mat1f& grey, const std::function<cv::Mat1b()>& pad_mask, const ImageEffects& effects,
                  std::uint64_t frame_seed, int view_index, bool mirror, cv::Mat out);
 

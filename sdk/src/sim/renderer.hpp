@@ -25,6 +25,10 @@ struct ImageEffects {
   int dust_blobs = 0;              // dark occluding blobs (dust) per view
   int specular_spots = 0;          // bright saturated spots per view
   double occlusion_fraction = 0.0; // fraction of the pad hidden by a dark band, 0..0.9
+  // Where the static effects sit (dust, specular spots, the occluding band, the
+  // lighting ramp): fixed for a run so they stay put from frame to frame, as a
+  // speck of dust or a shadow would; the per-frame seed drives only the noise.
+  std::uint64_t layout_seed = 0;
   void validate() const;           // throws InputError naming the bad field
 };
 

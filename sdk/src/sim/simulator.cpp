@@ -57,9 +57,8 @@ struct Simulator::Impl {
     return k / sc.fps;
   }
 
-  void fillTouchFrame(int k) {
-    frame.t = timeOf(k);
-    const auto poses = sc.posesAt(frame.t, *lattice);
+  void fillTouchFrame(double t, const std::vector<Eigen::Isometry3d>& poses) {
+    frame.t = t;
     model->advance(poses);
     const MarkerPattern p = sc.pad.pattern;
     for (int id = 0; id < p.count(); ++id) {
@@ -144,7 +143,23 @@ const GroundTruthFrame& Simulator::next() {
   if (m.sc.isCalibration())
     m.fillCalibrationFrame(m.index);
   else
-    m.fillTouchFrame(m.index);
+    m.fillTouchFrame(m.timeOf(m.index), m.sc.posesAt(m.timeOf(m.index), *m.lattice));
+  return m.frame;
+}
+
+const GroundTruthFrame& Simulator::nextPosed(const std::vector<Keyframe>& poses) {
+  Impl& m = *impl_;
+  if (m.sc.isCalibration()) throw InputError("Simulator::nextPosed: a calibration scenario has no indenter to pose");
+  if (poses.size() != m.sc.indenters.size())
+    throw InputError("Simulator::nextPosed: " + std::to_string(poses.size()) + " poses for " +
+                     std::to_string(m.sc.indenters.size()) + " indenters");
+  // The scenario's own pose rule (pivot, depth below the dome) on one-keyframe tracks.
+  Scenario posed = m.sc;
+  for (size_t i = 0; i < poses.size(); ++i) posed.indenters[i].keyframes = {poses[i]};
+  const double t = m.index < 0 ? 0.0 : m.frame.t + 1.0 / m.sc.fps;
+  ++m.index;
+  m.frame.index = m.index;
+  m.fillTouchFrame(t, posed.posesAt(t, *m.lattice));
   return m.frame;
 }
 
@@ -165,7 +180,14 @@ cv::Mat Simulator::render() const {
                                    m.lattice->spacing(), factor, m.texture()));
   }
   const std::uint64_t frame_seed = static_cast<std::uint64_t>(m.seed) * 1000003ull + static_cast<std::uint64_t>(m.index);
-  return m.renderer->render(sheets, m.sc.image, frame_seed);
+  ImageEffects effects = m.sc.image;
+  effects.layout_seed = m.seed;  // dust, spots and occluders stay put for the whole run
+  return m.renderer->render(sheets, effects, frame_seed);
+}
+
+void Simulator::setImageEffects(const ImageEffects& effects) {
+  effects.validate();
+  impl_->sc.image = effects;
 }
 
 const Scenario& Simulator::scenario() const { return impl_->sc; }

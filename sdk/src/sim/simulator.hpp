@@ -36,9 +36,18 @@ class Simulator {
   bool done() const;
   // Advances to the next frame and returns its ground truth.
   const GroundTruthFrame& next();
+  // Interactive driving (the viewer's virtual finger): advances one frame,
+  // 1 / fps after the current one, with indenter i posed by poses[i] (x, y,
+  // depth, yaw, pitch, roll as in a keyframe; its t is ignored) instead of the
+  // scenario's keyframes. Not bounded by frameCount(). Throws InputError for a
+  // calibration scenario or when poses.size() differs from the indenter count.
+  const GroundTruthFrame& nextPosed(const std::vector<Keyframe>& poses);
   const GroundTruthFrame& current() const;
   // Renders the current frame (call after next()).
   cv::Mat render() const;
+  // Changes the image effects from the next render() on (e.g. an occlusion that
+  // appears mid-run); throws InputError for invalid effects.
+  void setImageEffects(const ImageEffects& effects);
 
   const Scenario& scenario() const;
   StereoCalibration calibration() const;      // exact calibration of the virtual cameras
