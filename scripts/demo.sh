@@ -9,4 +9,4 @@ bash scripts/install-deps.sh
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build build -j"$(nproc)" --target onetip_cli
 mkdir -p out
-./build/bin/onetip sim --scenario samples/scenarios/demo_touch.yaml --out out/demo --contact-sheet out/demo/contact_sheet.png
+./build/bin/onetip demo --scenario samples/scenarios/demo_touch.yaml --out out/demo

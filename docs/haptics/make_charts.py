@@ -1,13 +1,17 @@
 #!/usr/bin/python3
 """Charts of the haptic renderer's objective evaluation (like Fig. 7 of the
-journal paper) and the kNN benchmark, from the CSVs in this folder.
+journal paper), the choice of onetip's contact-field feature and the kNN
+benchmark, from the CSVs in this folder.
 
 Inputs (made by the programs in tests/bench/haptics/, see README.md):
-  objective_evaluation.csv, objective_summary.csv, bench_knn.csv
-Outputs: objective_fig7.png, objective_by_interaction.png, knn_speed.png
+  objective_<sensor>_evaluation.csv, objective_<sensor>_summary.csv  (sensor: biotac, onetip)
+  onetip_features.csv, bench_knn.json (Google Benchmark JSON)
+Outputs: objective_fig7_<sensor>.png, objective_by_interaction_<sensor>.png,
+  onetip_features.png, knn_speed.png
 Run: /usr/bin/python3 docs/haptics/make_charts.py
 """
 import csv
+import json
 import os
 
 import matplotlib
@@ -16,6 +20,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+SENSORS = {"biotac": "BioTac-like (20 channels)", "onetip": "onetip pad, 5 x 5 marker grid (75 channels)"}
 
 
 def read(name):
@@ -23,7 +28,7 @@ def read(name):
         return list(csv.DictReader(f))
 
 
-def fig7(summary):
+def fig7(summary, sensor):
     """Mean +- SEM normalised error vs DoF (top, one panel per n) and vs step (bottom)."""
     fig, axes = plt.subplots(2, 3, figsize=(12, 7), sharey=True)
     key = lambda r: (float(r["step_deg"]), int(r["neighbors"]), int(r["dof"]))
@@ -48,12 +53,13 @@ def fig7(summary):
     axes[1][0].set_ylabel("normalised error (Eq. 9)")
     axes[0][0].legend(fontsize=8)
     axes[1][0].legend(fontsize=8)
-    fig.suptitle("Objective evaluation in simulation, mean +- SEM over the six interactions")
+    fig.suptitle(f"Objective evaluation in simulation, {SENSORS[sensor]}: mean +- SEM over the six interactions")
     fig.tight_layout()
-    fig.savefig(os.path.join(HERE, "objective_fig7.png"), dpi=110)
+    fig.savefig(os.path.join(HERE, f"objective_fig7_{sensor}.png"), dpi=110)
+    plt.close(fig)
 
 
-def by_interaction(rows):
+def by_interaction(rows, sensor):
     """Like Fig. 6: error vs DoF per interaction for n = 1, step 3 deg."""
     fig, ax = plt.subplots(figsize=(6, 4))
     for name in sorted({r["interaction"] for r in rows}):
@@ -63,34 +69,74 @@ def by_interaction(rows):
     ax.set_xticks((1, 2, 3))
     ax.set_xlabel("device DoF")
     ax.set_ylabel("normalised error (Eq. 9)")
-    ax.set_title("n = 1, step 3 deg")
+    ax.set_title(f"{SENSORS[sensor]}: n = 1, step 3 deg", fontsize=9)
     ax.legend(fontsize=8)
     fig.tight_layout()
-    fig.savefig(os.path.join(HERE, "objective_by_interaction.png"), dpi=110)
+    fig.savefig(os.path.join(HERE, f"objective_by_interaction_{sensor}.png"), dpi=110)
+    plt.close(fig)
+
+
+def onetip_features(rows):
+    """Full-field error of each feature, per condition (3-DoF) and mean over all 27."""
+    features = []
+    for r in rows:
+        if r["feature"] not in features:
+            features.append(r["feature"])
+    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(11, 4))
+    for f in features:
+        sel = [r for r in rows if r["feature"] == f and r["dof"] == "3"]
+        labels = [f"{float(r['step_deg']):g}/{r['neighbors']}" for r in sel]
+        ax1.plot(labels, [float(r["field_eq9"]) for r in sel], marker="o", label=f)
+    ax1.set_xlabel("step (deg) / neighbours, 3-DoF")
+    ax1.set_ylabel("full-field Eq. 9 error")
+    ax1.legend(fontsize=8)
+    means = [sum(float(r["field_eq9"]) for r in rows if r["feature"] == f) / 27.0 for f in features]
+    ax2.bar(features, means)
+    ax2.set_ylabel("full-field Eq. 9 error, mean of 27 conditions")
+    fig.suptitle("onetip: which fixed-length feature of the contact field renders best")
+    fig.tight_layout()
+    fig.savefig(os.path.join(HERE, "onetip_features.png"), dpi=110)
+    plt.close(fig)
 
 
 def knn_speed(bench):
-    rows = [r for r in bench if r.get("name") and "Render" in r["name"] or "Flann" in r.get("name", "")]
-    rows = [r for r in rows if "Build" not in r["name"]]
-    fig, ax = plt.subplots(figsize=(7, 3.5))
-    names = [r["name"].split("/iterations")[0] for r in rows]
-    cpu_us = [float(r["cpu_time"]) for r in rows]
-    ax.barh(names, cpu_us)
-    ax.set_xscale("log")
-    ax.set_xlabel("CPU time per query, us (mean; log scale)")
-    ax.set_title("kNN on 166,375 x 20 (one core)")
+    """Per-query CPU medians of the leaf-size sweep and tree vs brute force (same run)."""
+    leaf = [r for r in bench if r["name"].startswith("BM_KdTreeLeafSizeCpu/")]
+    pair = [r for r in bench if r["name"].startswith("BM_TreeVsBruteCpu/") and r.get("aggregate_name") == "median"]
+    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(11, 3.8))
+    ax1.plot([int(r["name"].split("/")[1]) for r in leaf], [float(r["median_us"]) for r in leaf], marker="o",
+             label="median")
+    ax1.plot([int(r["name"].split("/")[1]) for r in leaf], [float(r["mean_us"]) for r in leaf], marker="s",
+             label="mean")
+    ax1.set_xscale("log", base=2)
+    ax1.set_xlabel("leaf size")
+    ax1.set_ylabel("CPU us per query (n = 8)")
+    ax1.legend(fontsize=8)
+    names = []
+    values = []
+    for r in pair:
+        leaf_size = r["name"].split("/")[2]
+        names += [f"tree, leaf {leaf_size}", f"brute force (leaf {leaf_size} run)"]
+        values += [float(r["tree_median_us"]), float(r["brute_median_us"])]
+    ax2.barh(names, values)
+    ax2.set_xscale("log")
+    ax2.set_xlabel("median CPU us per query, n = 8 (log)")
+    fig.suptitle("kNN on 166,375 x 20, one core")
     fig.tight_layout()
     fig.savefig(os.path.join(HERE, "knn_speed.png"), dpi=110)
+    plt.close(fig)
 
 
 def main():
-    summary = read("objective_summary.csv")
-    fig7(summary)
-    by_interaction(read("objective_evaluation.csv"))
-    if os.path.exists(os.path.join(HERE, "bench_knn.csv")):
-        lines = open(os.path.join(HERE, "bench_knn.csv")).read().splitlines()
-        start = next(i for i, l in enumerate(lines) if l.startswith("name,"))
-        knn_speed(list(csv.DictReader(lines[start:])))
+    for sensor in SENSORS:
+        if os.path.exists(os.path.join(HERE, f"objective_{sensor}_summary.csv")):
+            fig7(read(f"objective_{sensor}_summary.csv"), sensor)
+            by_interaction(read(f"objective_{sensor}_evaluation.csv"), sensor)
+    if os.path.exists(os.path.join(HERE, "onetip_features.csv")):
+        onetip_features(read("onetip_features.csv"))
+    if os.path.exists(os.path.join(HERE, "bench_knn.json")):
+        with open(os.path.join(HERE, "bench_knn.json")) as f:
+            knn_speed(json.load(f)["benchmarks"])
 
 
 if __name__ == "__main__":

@@ -20,7 +20,7 @@ namespace {
 
 std::atomic<bool> g_stop{false};
 static_assert(std::atomic<bool>::is_always_lock_free);
-extern "C" void onInterrupt(int) { g_stop.store(true); }
+void onInterrupt(int) { g_stop.store(true); }  // internal linkage: other commands have their own
 
 std::unique_ptr<haptics::TactileSensorModel> makeSensor(const std::string& name, double noise) {
   if (name == "biotac") {
@@ -47,7 +47,9 @@ int runCollect(const Args& args) {
 
   const bool quiet = args.has("quiet");
   double last_drawn = -1.0;
+  calib::CollectionProgress last;
   auto draw = [&](const calib::CollectionProgress& p) {
+    last = p;
     if (quiet || (p.elapsed_s - last_drawn < 0.25 && p.done < p.total)) return;
     last_drawn = p.elapsed_s;
     std::fprintf(stderr, "\r%s", calib::formatProgressBar(p).c_str());
@@ -62,7 +64,7 @@ int runCollect(const Args& args) {
     throw;
   }
   std::signal(SIGINT, previous);
-  if (!quiet && last_drawn >= 0.0) std::fprintf(stderr, "\n");
+  if (!quiet && last_drawn >= 0.0) std::fprintf(stderr, "\r%s\n", calib::formatProgressBar(last).c_str());
   if (result.status == calib::CollectionResult::Status::interrupted) {
     std::cerr << "onetip collect: stopped at " << result.rows << "/" << result.total << " rows ("
               << options.progressPath() << "); run the same command again to resume\n";

@@ -56,7 +56,7 @@ int StickSlipClassifier::classify(const MarkerField& now, const std::vector<Eige
     const double normal_part = std::abs(d.dot(n));
     const double tangential_part = (d - d.dot(n) * n).norm();
     const int id = static_cast<int>(i);
-    if (std::max(normal_part, tangential_part) > options_.slip_threshold_mm) {
+    if (d.norm() > options_.slip_threshold_mm) {
       const MarkerLabel next = tangential_part >= normal_part ? MarkerLabel::slip : MarkerLabel::detached;
       changed += label_[i] == next ? 0 : 1;
       label_[i] = next;

@@ -7,7 +7,7 @@
 // so its drift d_i = p_i - T a_i only holds measurement noise. Classification
 // with the current pose estimate T_k, splitting d_i along the contact normal
 // n_i into a normal part d_n = d_i . n_i and a tangential part d_t:
-//   max(|d_n|, |d_t|) > slip_threshold_mm -> the marker does not follow the
+//   |d_i| > slip_threshold_mm -> the marker does not follow the
 //     finger: `slip` when the tangential part dominates (it slides over the
 //     finger), `detached` when the normal part does (a region marker that is
 //     not actually touching, e.g. just outside the contact edge); a_i is
@@ -15,7 +15,10 @@
 //   a slipping or detached marker whose drift stays below the threshold for
 //   stick_hold_frames consecutive frames sticks again (hysteresis).
 // Because the drift is measured against a fixed anchor, slow creep accumulates
-// until it crosses the threshold while position noise does not.
+// until it crosses the threshold while position noise does not. The pose T_k
+// comes from a fit over the sticking markers trimmed of those drifting beyond
+// the same threshold (pose/rigid_fit.hpp), so undetected slip does not bend
+// T_k and push true stick markers over the threshold.
 #pragma once
 
 #include <Eigen/Geometry>
@@ -29,7 +32,7 @@ namespace onetip::contact {
 enum class MarkerLabel : std::uint8_t { outside = 0, stick = 1, slip = 2, detached = 3 };
 
 struct StickSlipOptions {
-  double slip_threshold_mm = 0.06;  // tangential drift from the anchor (about 3 sigma of noise)
+  double slip_threshold_mm = 0.01;  // drift from the anchor (about 7 sigma of the drift noise)
   int stick_hold_frames = 10;       // quiet frames before a slipping marker sticks again
   void validate() const;            // throws InputError naming the bad field
 };

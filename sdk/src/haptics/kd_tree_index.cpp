@@ -51,7 +51,7 @@ class TieAwareResultSet {
   double worstDist() const {
     if (!full()) return std::numeric_limits<double>::infinity();
     const double w = slots_[capacity_ - 1].distance_sq;
-    return w * (1.0 + 1e-9) + std::numeric_limits<double>::min();
+    return w * (1.0 + 1e-5) + std::numeric_limits<double>::min();
   }
   bool addPoint(double dist, std::uint32_t vector) {
     for (std::uint32_t g = group_start_[vector]; g < group_start_[vector + 1]; ++g)

@@ -2,11 +2,12 @@
 //
 // Built on nanoflann (header-only, Debian libnanoflann-dev; kept in the .cpp)
 // with the SDK's own metric and result set (neighbor.hpp): the squared
-// Euclidean distance of float points accumulated in double, and neighbours
-// ordered by (distance, id). The result set reports a worst distance inflated
-// by a relative 1e-9 so that points at exactly the current k-th distance are
-// still offered and ranked by id, and rounding in nanoflann's incremental
-// bound cannot prune a tie: the ids returned are exactly those of a brute-force
+// Euclidean distance of float points (float lanes), and neighbours ordered by
+// (distance, id). The result set reports a worst distance inflated by a
+// relative 1e-5 (above the distance's float rounding) so that points at
+// exactly the current k-th distance are still offered and ranked by id, and
+// neither that rounding nor nanoflann's incremental bound (double) can prune a
+// point the scan would keep: the ids returned are exactly those of a brute-force
 // scan (brute_force_knn.hpp). Bit-identical rows (every no-contact row of a
 // noise-free dataset) are stored once in the tree with their ids, so a query
 // near them costs one distance instead of a scan of the ties. After the build

@@ -38,6 +38,7 @@ void AdaptivePoseOptions::validate() const {
   positive(position_noise_mm, "position_noise_mm");
   if (!(rotation_significance >= 0)) throw InputError("pose options: rotation_significance must not be negative");
   positive(min_rotation_spread_mm, "min_rotation_spread_mm");
+  if (macro_confirm_frames < 1) throw InputError("pose options: macro_confirm_frames must be at least 1");
   if (min_macro_markers < 1) throw InputError("pose options: min_macro_markers must be at least 1");
   positive(max_step_mm, "max_step_mm");
   positive(max_step_deg, "max_step_deg");
@@ -53,6 +54,7 @@ void AdaptivePoseEstimator::reset() {
   active_ = false;
   macro_slip_ = false;
   macro_frames_ = 0;
+  macro_suspect_frames_ = 0;
   pose_ = Eigen::Isometry3d::Identity();
   history_.clear();
 }
@@ -75,6 +77,7 @@ PoseStep AdaptivePoseEstimator::start(const contact::ContactField& field, const 
   active_ = true;
   macro_slip_ = false;
   macro_frames_ = 0;
+  macro_suspect_frames_ = 0;
   pose_ = Eigen::Isometry3d::Identity();
   const contact::ContactRegion& region = field.regions.front();
   c0_ = region.rest_centroid;
@@ -94,26 +97,55 @@ PoseStep AdaptivePoseEstimator::start(const contact::ContactField& field, const 
 
 namespace {
 
-// Fit of the anchored markers `ids` (references T a_i) to their positions now:
-// robust Kabsch when they spread enough to fix a rotation, else translation only.
-RigidFit fitAnchored(const contact::StickSlipClassifier& classifier, const std::vector<int>& ids,
-                     const MarkerField& now, const Eigen::Isometry3d& pose, const AdaptivePoseOptions& o,
-                     bool& rotation_supported) {
-  std::vector<Eigen::Vector3d> from, to;
+// Fit of the anchored markers `ids` (references T a_i) to their positions now,
+// trimmed of markers that drift from their anchors by more than the slip
+// threshold, lagging ones first (rigid_fit.hpp; a marker relaxes along minus
+// its tangential displacement u_t): robust Kabsch when the kept markers spread
+// enough to fix a rotation, else translation only. `ids` becomes the kept set.
+RigidFit fitAnchored(const contact::StickSlipClassifier& classifier, const contact::ContactField& field,
+                     std::vector<int>& ids, const MarkerField& now, const Eigen::Isometry3d& pose,
+                     const AdaptivePoseOptions& o, bool& rotation_supported) {
+  std::vector<Eigen::Vector3d> from, to, relax;
   for (int id : ids) {
+    const size_t i = static_cast<size_t>(id);
     from.push_back(pose * classifier.anchor(id));
-    to.push_back(now.position[static_cast<size_t>(id)]);
+    to.push_back(now.position[i]);
+    const Eigen::Vector3d& u = field.displacement[i];
+    const Eigen::Vector3d& n = field.normal[i];
+    const Eigen::Vector3d tangential = u - u.dot(n) * n;
+    const double size = tangential.norm();
+    relax.push_back(size > 1e-9 ? Eigen::Vector3d(-tangential / size) : Eigen::Vector3d::Zero());
   }
-  const double spread = rotationSpread(from);
-  rotation_supported = spread >= o.min_rotation_spread_mm;
-  if (rotation_supported) {
-    const RigidFit fit = fitRigidMotionRobust(from, to, o.robust_scale_mm);
-    // Rotation noise of a rigid fit: sigma_d / (spread sqrt(n)), sigma_d the
-    // noise of a marker's drift (two positions).
-    const double sigma = std::sqrt(2.0) * o.position_noise_mm / (spread * std::sqrt(static_cast<double>(from.size())));
-    if (fit.ok && Eigen::AngleAxisd(fit.motion.linear()).angle() >= o.rotation_significance * sigma) return fit;
+  const TrimmedFit trimmed =
+      fitRigidMotionTrimmed(from, to, relax, o.robust_scale_mm, o.stick_slip.slip_threshold_mm);
+  if (trimmed.fit.ok) {
+    size_t kept = 0;
+    for (size_t i = 0; i < from.size(); ++i)
+      if (trimmed.inlier[i]) {
+        from[kept] = from[i];
+        to[kept] = to[i];
+        ids[kept++] = ids[i];
+      }
+    from.resize(kept);
+    to.resize(kept);
+    ids.resize(kept);
   }
+  // Rotation noise of a fit over n points of RMS extent e: sigma_d / (e sqrt(n)),
+  // sigma_d the noise of a marker's drift (two positions); smaller rotations
+  // are not applied (a real one keeps growing against the anchors).
+  const Eigen::Vector2d spread = planarSpread(from);
+  const auto significant = [&](const RigidFit& fit, double extent) {
+    const double sigma = std::sqrt(2.0) * o.position_noise_mm / (extent * std::sqrt(static_cast<double>(from.size())));
+    return fit.ok && Eigen::AngleAxisd(fit.motion.linear()).angle() >= o.rotation_significance * sigma;
+  };
+  rotation_supported = trimmed.fit.ok && spread.x() >= o.min_rotation_spread_mm;
+  if (rotation_supported && significant(trimmed.fit, spread.x())) return trimmed.fit;
   rotation_supported = false;
+  if (spread.x() < o.min_rotation_spread_mm && spread.y() >= o.min_rotation_spread_mm) {
+    // A stick set along a line (a small contact twisting about its centre).
+    const RigidFit yaw = fitRotationAboutZ(from, to);
+    if (significant(yaw, spread.y())) return yaw;
+  }
   return fitTranslation(from, to);
 }
 
@@ -157,13 +189,14 @@ Eigen::Isometry3d AdaptivePoseEstimator::solveIncrement(const contact::ContactFi
   }
 
   bool rotation_supported = false;
-  RigidFit fit = fitAnchored(classifier_, classifier_.withLabel(MarkerLabel::stick), now, pose_, options_,
-                             rotation_supported);
-  if (fit.ok && classifier_.classify(now, field.normal, fit.motion * pose_) > 0)
-    fit = fitAnchored(classifier_, classifier_.withLabel(MarkerLabel::stick), now, pose_, options_,
-                      rotation_supported);
+  std::vector<int> stick_ids = classifier_.withLabel(MarkerLabel::stick);
+  RigidFit fit = fitAnchored(classifier_, field, stick_ids, now, pose_, options_, rotation_supported);
+  if (fit.ok && classifier_.classify(now, field.normal, fit.motion * pose_) > 0) {
+    stick_ids = classifier_.withLabel(MarkerLabel::stick);
+    fit = fitAnchored(classifier_, field, stick_ids, now, pose_, options_, rotation_supported);
+  }
   std::vector<StickCorrespondence> stick;
-  for (int id : classifier_.withLabel(MarkerLabel::stick))
+  for (int id : stick_ids)
     stick.push_back({pose_ * classifier_.anchor(id), now.position[static_cast<size_t>(id)]});
   std::vector<SlipCorrespondence> slip;
   for (int id : classifier_.withLabel(MarkerLabel::slip)) {
@@ -189,6 +222,7 @@ Eigen::Isometry3d AdaptivePoseEstimator::solveIncrement(const contact::ContactFi
 
 void AdaptivePoseEstimator::enterMacroSlip(const MarkerField& now, const Eigen::Isometry3d& increment) {
   macro_slip_ = true;
+  macro_suspect_frames_ = 0;
   macro_frames_ = 0;
   classifier_.markAllSlipping(now, increment * pose_);
 }
@@ -209,7 +243,13 @@ void AdaptivePoseEstimator::checkMacroSlip(const contact::ContactField& field, c
   Eigen::Vector3d travel = after - before;
   drift.z() = 0;
   travel.z() = 0;
-  if (drift.norm() <= std::max(options_.macro_drift_mm, options_.macro_drift_ratio * travel.norm())) return;
+  if (drift.norm() <= std::max(options_.macro_drift_mm, options_.macro_drift_ratio * travel.norm())) {
+    macro_suspect_frames_ = 0;
+    return;
+  }
+  // A drift seen in consecutive frames: a footprint jittering because markers
+  // come and go is not mistaken for the finger sliding away.
+  if (++macro_suspect_frames_ < options_.macro_confirm_frames) return;
   // The finger slides while the markers stay behind: catch up once, then follow the footprint.
   Eigen::Isometry3d catch_up = Eigen::Isometry3d::Identity();
   catch_up.translation() = drift;

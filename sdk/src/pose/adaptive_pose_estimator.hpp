@@ -3,14 +3,20 @@
 //
 // Per frame k in contact (S, mm; rotations in radians):
 //  1. Stick/slip labels (contact/stick_slip_classifier.hpp) against the trial
-//     motion dT0 = robust Kabsch(T_{k-1} a_i -> p_i) over the sticking markers,
+//     motion dT0 = Kabsch(T_{k-1} a_i -> p_i) over the sticking markers,
 //     whose references are their anchors a_i carried by the previous pose
 //     estimate T_{k-1} (so measurement noise does not accumulate frame to
-//     frame). A stick set whose x-y spread is below min_rotation_spread_mm
-//     (a fresh, tiny contact) gives a translation only, and so does a fitted
-//     rotation smaller than rotation_significance times its noise
-//     sqrt(2) sigma_p / (spread sqrt(n)): a real rotation keeps growing
-//     against the anchors until it is significant, noise does not.
+//     frame), trimmed of markers drifting beyond the slip threshold, the ones
+//     lagging back towards their rest position first (rigid_fit.hpp: a ring
+//     of markers starting to slip would otherwise drag the fit until the
+//     sticking core looks like the outlier). The kept markers are the stick
+//     set of step 2. A kept set whose x-y spread (smaller principal extent)
+//     is below min_rotation_spread_mm gives a rotation about S.z only when
+//     it is long enough (a line of markers: the centre of a small twisting
+//     contact), else a translation only; a fitted rotation smaller than
+//     rotation_significance times its noise sqrt(2) sigma_p / (extent sqrt(n))
+//     is not applied: a real rotation keeps growing against the anchors until
+//     it is significant, noise does not.
 //  2. The increment dT_k = T_k T_{k-1}^-1 from
 //       full stick (no slipping marker)      -> Kabsch / Umeyama (rigid_fit.hpp, Eq. 1);
 //       partial slip (Eq. 16 holds)          -> Ceres stick/slip least squares (Eq. 13-15);
@@ -32,7 +38,9 @@
 //     macro_drift_mm and above macro_drift_ratio of the footprint's own travel
 //     means the finger slides while the markers stay behind (in partial slip
 //     the footprint leads the finger by ~20% of the travel in the simulator,
-//     at gross slip the stalled estimate loses all of it). T_k then catches
+//     at gross slip the stalled estimate loses all of it), in
+//     macro_confirm_frames consecutive frames (a footprint jittering because
+//     markers are lost is not a slide). T_k then catches
 //     up by the drift once and the centroid model takes over. No decision is
 //     taken while the region size changes by macro_size_change or the finger
 //     tilts by macro_tilt_gate_deg within the window (rolling and pitching
@@ -67,16 +75,17 @@ struct AdaptivePoseOptions {
   contact::StickSlipOptions stick_slip;
   StickSlipSolverOptions solver;
   ModelPolicy policy = ModelPolicy::adaptive;
-  double position_noise_mm = 0.012;     // per-axis noise of a marker position (vision front end)
+  double position_noise_mm = 0.0006;    // per-axis noise of a marker position (vision front end)
   double rotation_significance = 1.0;   // a rotation below this many noise sigmas is not applied
-  double robust_scale_mm = 0.03;        // Cauchy scale of the stick fit
+  double robust_scale_mm = 0.005;       // Cauchy scale of the stick fit
   double min_rotation_spread_mm = 0.6;  // smaller stick sets give translation only
   int min_macro_markers = 15;           // smaller regions never declare macroscopic slip
-  double macro_drift_mm = 0.15;         // footprint drift off the finger over the window...
-  double macro_drift_ratio = 0.5;       // ...and this fraction of the footprint's travel
+  double macro_drift_mm = 0.08;         // footprint drift off the finger over the window...
+  double macro_drift_ratio = 0.35;      // ...and this fraction of the footprint's travel
   double macro_tilt_gate_deg = 1.5;
   double macro_size_change = 0.3;     // no decision while the region size changes this fraction
-  int macro_exit_window = 8;
+  int macro_exit_window = 5;
+  int macro_confirm_frames = 2;       // consecutive frames the drift must be seen
   double macro_exit_lag_mm = 0.06;
   double max_step_mm = 1.5;
   double max_step_deg = 6.0;
@@ -137,6 +146,7 @@ class AdaptivePoseEstimator {
   bool active_ = false;
   bool macro_slip_ = false;
   int macro_frames_ = 0;                     // frames since macroscopic slip began
+  int macro_suspect_frames_ = 0;             // consecutive frames with a footprint drift
   Eigen::Isometry3d pose_ = Eigen::Isometry3d::Identity();
   Eigen::Vector3d c0_{0, 0, 0};
   std::deque<Frame> history_;                // newest last; history_.back() is frame k-1

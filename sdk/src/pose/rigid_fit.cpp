@@ -55,6 +55,47 @@ RigidFit fitRigidMotionRobust(const std::vector<Eigen::Vector3d>& from, const st
   return fit;
 }
 
+TrimmedFit fitRigidMotionTrimmed(const std::vector<Eigen::Vector3d>& from, const std::vector<Eigen::Vector3d>& to,
+                                 const std::vector<Eigen::Vector3d>& relax, double scale_mm, double trim_mm) {
+  TrimmedFit out;
+  out.inlier.assign(from.size(), 1);
+  std::vector<size_t> kept(from.size());
+  for (size_t i = 0; i < kept.size(); ++i) kept[i] = i;
+  std::vector<Eigen::Vector3d> a, b;
+  for (;;) {
+    a.clear();
+    b.clear();
+    for (size_t i : kept) {
+      a.push_back(from[i]);
+      b.push_back(to[i]);
+    }
+    out.fit = fitRigidMotion(a, b);
+    if (!out.fit.ok || kept.size() <= 3) break;
+    // While some residual exceeds trim_mm: the most lagging point if it lags
+    // by more than a quarter of the largest residual, else the largest residual.
+    long worst = -1, most_lagging = -1;
+    double largest = trim_mm, largest_lag = 0;
+    for (size_t k = 0; k < kept.size(); ++k) {
+      const Eigen::Vector3d r = b[k] - out.fit.motion * a[k];
+      if (r.norm() > largest) {
+        largest = r.norm();
+        worst = static_cast<long>(k);
+      }
+      const double lag = relax.empty() ? 0.0 : r.dot(relax[kept[k]]);
+      if (lag > largest_lag) {
+        largest_lag = lag;
+        most_lagging = static_cast<long>(k);
+      }
+    }
+    if (worst < 0) break;
+    const long drop = most_lagging >= 0 && largest_lag > 0.25 * largest ? most_lagging : worst;
+    out.inlier[kept[static_cast<size_t>(drop)]] = 0;
+    kept.erase(kept.begin() + drop);
+  }
+  if (out.fit.ok) out.fit = fitRigidMotionRobust(a, b, scale_mm);
+  return out;
+}
+
 RigidFit fitTranslation(const std::vector<Eigen::Vector3d>& from, const std::vector<Eigen::Vector3d>& to) {
   RigidFit fit;
   if (from.empty() || to.size() != from.size()) return fit;
@@ -69,16 +110,43 @@ RigidFit fitTranslation(const std::vector<Eigen::Vector3d>& from, const std::vec
   return fit;
 }
 
-double rotationSpread(const std::vector<Eigen::Vector3d>& points) {
-  if (points.size() < 3) return 0;
+RigidFit fitRotationAboutZ(const std::vector<Eigen::Vector3d>& from, const std::vector<Eigen::Vector3d>& to) {
+  RigidFit fit;
+  const size_t n = from.size();
+  if (n < 2 || to.size() != n) return fit;
+  Eigen::Vector3d ca = Eigen::Vector3d::Zero(), cb = Eigen::Vector3d::Zero();
+  for (size_t i = 0; i < n; ++i) {
+    ca += from[i];
+    cb += to[i];
+  }
+  ca /= static_cast<double>(n);
+  cb /= static_cast<double>(n);
+  double cross = 0, dot = 0;
+  for (size_t i = 0; i < n; ++i) {
+    const Eigen::Vector2d a = (from[i] - ca).head<2>(), b = (to[i] - cb).head<2>();
+    cross += a.x() * b.y() - a.y() * b.x();
+    dot += a.dot(b);
+  }
+  if (!(std::hypot(cross, dot) > 0)) return fit;
+  fit.motion.linear() = Eigen::AngleAxisd(std::atan2(cross, dot), Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  fit.motion.translation() = cb - fit.motion.linear() * ca;
+  double sq = 0;
+  for (size_t i = 0; i < n; ++i) sq += (fit.motion * from[i] - to[i]).squaredNorm();
+  fit.rms_mm = std::sqrt(sq / static_cast<double>(n));
+  fit.ok = fit.motion.matrix().allFinite();
+  return fit;
+}
+
+Eigen::Vector2d planarSpread(const std::vector<Eigen::Vector3d>& points) {
+  if (points.size() < 2) return Eigen::Vector2d::Zero();
   Eigen::Vector2d mean = Eigen::Vector2d::Zero();
   for (const auto& p : points) mean += p.head<2>();
   mean /= static_cast<double>(points.size());
   Eigen::Matrix2d cov = Eigen::Matrix2d::Zero();
   for (const auto& p : points) cov += (p.head<2>() - mean) * (p.head<2>() - mean).transpose();
   cov /= static_cast<double>(points.size());
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(cov);
-  return std::sqrt(std::max(0.0, eig.eigenvalues()[0]));
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(cov);  // ascending eigenvalues
+  return eig.eigenvalues().cwiseMax(0.0).cwiseSqrt();
 }
 
 }  // namespace onetip::pose

@@ -12,13 +12,33 @@
 // w_i = 1 / (1 + (r_i / scale_mm)^2) of the previous fit's residuals r_i, so a
 // few markers that do not follow the motion (slipping or out of contact but
 // not yet labelled) barely pull the fit.
+// Trimmed variant (for a set that may still hold a few undetected slipping
+// markers): the least-squares fit is repeated without one point while some
+// residual r_i = b_i - (R a_i + t) exceeds trim_mm and more than three points
+// remain; the points kept are the inliers, and the result is the robust fit
+// over them. (Least squares while trimming: a robust fit may lock onto a
+// large slipping group and leave nothing to tell the groups apart.) Which point goes: the largest residual
+// among those that point back towards their rest position
+// (r_i . relax_i > 0, relax_i given per point, e.g. minus the marker's
+// tangential displacement: an elastic skin slips back towards rest relative
+// to the finger, it is never dragged ahead of it), else the largest residual.
+// One point at a time, and the direction, matter: a ring of slipping markers
+// drags the first fit so far that the sticking markers inside it show
+// residuals as large as the ring's (a rotation fit weighs points by their
+// squared distance), but ahead of the fit instead of behind it.
 // Translation-only variant: t = weighted mean of b_i - a_i, R = I (for point
 // sets too small or too narrow to fix a rotation).
-// rotationSpread: the smaller principal RMS extent of the points' x-y
-// projection (mm), i.e. how well they constrain a rotation.
+// Rotation about S.z only (for points along a line, which fix the rotation
+// about the pad normal but not about the line): R = Rz(theta) with theta from
+// the 2-D Procrustes problem on the centred x-y coordinates,
+// theta = atan2(sum a x b, sum a . b), and t = b_bar - R a_bar.
+// planarSpread: the (smaller, larger) principal RMS extents of the points'
+// x-y projection (mm), i.e. how well they constrain a general rotation and a
+// rotation about S.z.
 #pragma once
 
 #include <Eigen/Geometry>
+#include <cstdint>
 #include <vector>
 
 namespace onetip::pose {
@@ -34,7 +54,15 @@ RigidFit fitRigidMotion(const std::vector<Eigen::Vector3d>& from, const std::vec
                         const std::vector<double>& weights = {});
 RigidFit fitRigidMotionRobust(const std::vector<Eigen::Vector3d>& from, const std::vector<Eigen::Vector3d>& to,
                               double scale_mm, int iterations = 2);
+struct TrimmedFit {
+  RigidFit fit;
+  std::vector<std::uint8_t> inlier;  // per point: kept in the final fit
+};
+// `relax` may be empty (no direction preferred).
+TrimmedFit fitRigidMotionTrimmed(const std::vector<Eigen::Vector3d>& from, const std::vector<Eigen::Vector3d>& to,
+                                 const std::vector<Eigen::Vector3d>& relax, double scale_mm, double trim_mm);
 RigidFit fitTranslation(const std::vector<Eigen::Vector3d>& from, const std::vector<Eigen::Vector3d>& to);
-double rotationSpread(const std::vector<Eigen::Vector3d>& points);
+RigidFit fitRotationAboutZ(const std::vector<Eigen::Vector3d>& from, const std::vector<Eigen::Vector3d>& to);
+Eigen::Vector2d planarSpread(const std::vector<Eigen::Vector3d>& points);
 
 }  // namespace onetip::pose

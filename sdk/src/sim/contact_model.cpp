@@ -132,6 +132,7 @@ void ContactModel::solve(const std::vector<Eigen::Isometry3d>& poses) {
   // 2. Normal contact: conform on the active set, drop nodes that would pull.
   std::vector<int> A = candidates;
   Eigen::VectorXd p;
+  Eigen::LLT<Eigen::MatrixXd> normal_llt;  // factor of K_AA for the final A, reused below
   for (int iter = 0; iter < 12 && !A.empty(); ++iter) {
     const int n = static_cast<int>(A.size());
     Eigen::MatrixXd K(n, n);
@@ -140,7 +141,8 @@ void ContactModel::solve(const std::vector<Eigen::Isometry3d>& poses) {
       delta[r] = pen[static_cast<size_t>(A[static_cast<size_t>(r)])].depth;
       for (int c = 0; c <= r; ++c) K(r, c) = K(c, r) = kernel(A[static_cast<size_t>(r)], A[static_cast<size_t>(c)]);
     }
-    p = K.llt().solve(delta);
+    normal_llt.compute(K);
+    p = normal_llt.solve(delta);
     std::vector<int> kept;
     for (int r = 0; r < n; ++r)
       if (p[r] > 0) kept.push_back(A[static_cast<size_t>(r)]);
@@ -173,16 +175,24 @@ void ContactModel::solve(const std::vector<Eigen::Isometry3d>& poses) {
       if (!slipping[static_cast<size_t>(r)]) S.push_back(r);
     if (S.empty()) break;
     const int ns = static_cast<int>(S.size());
-    Eigen::MatrixXd K(ns, ns);
     Eigen::MatrixX2d rhs(ns, 2);
     for (int a = 0; a < ns; ++a) {
       const int ia = A[static_cast<size_t>(S[static_cast<size_t>(a)])];
       rhs.row(a) = target[static_cast<size_t>(ia)].transpose() / kTangentialComplianceRatio;
       for (int r = 0; r < n; ++r)
         if (slipping[static_cast<size_t>(r)]) rhs.row(a) -= kernel(ia, A[static_cast<size_t>(r)]) * q.row(r);
-      for (int b = 0; b <= a; ++b) K(a, b) = K(b, a) = kernel(ia, A[static_cast<size_t>(S[static_cast<size_t>(b)])]);
     }
-    const Eigen::MatrixX2d qs = K.llt().solve(rhs);
+    Eigen::MatrixX2d qs;
+    if (ns == n) {
+      qs = normal_llt.solve(rhs);  // all stick: K_SS is the normal system's K_AA
+    } else {
+      Eigen::MatrixXd K(ns, ns);
+      for (int a = 0; a < ns; ++a) {
+        const int ia = A[static_cast<size_t>(S[static_cast<size_t>(a)])];
+        for (int b = 0; b <= a; ++b) K(a, b) = K(b, a) = kernel(ia, A[static_cast<size_t>(S[static_cast<size_t>(b)])]);
+      }
+      qs = K.llt().solve(rhs);
+    }
     bool changed = false;
     for (int a = 0; a < ns; ++a) {
       const int r = S[static_cast<size_t>(a)];

@@ -82,7 +82,7 @@ void BM_Tracker(benchmark::State& state) {
 BENCHMARK(BM_Tracker)->DenseRange(0, 1);
 
 // A 17 x 17 marker layer shaped as a sphere of radius 20 mm (1 mm deep at the
-// centre), with the default noise of 0.012 mm per axis.
+// centre), with a pessimistic noise of 0.012 mm per axis (20x the front end's).
 struct Dimple {
   MarkerField field{17, 17};
   std::vector<Eigen::Vector3d> truth;

@@ -190,18 +190,18 @@ Exit runCli(const std::vector<std::string>& args, const fs::path& dir, bool inte
 
 TEST(CollectCli, SigintStopsCleanlyAndTheSameCommandResumes) {
   const auto dir = tempDir("sigint");
-  const std::vector<std::string> args = {"--step", "5", "--quiet", "--out", (dir / "d.csv").string()};
+  const std::vector<std::string> args = {"--step", "4", "--quiet", "--out", (dir / "d.csv").string()};
   const Exit stopped = runCli(args, dir, true);
   ASSERT_EQ(stopped.status, 1) << stopped.stderr_text;
   EXPECT_NE(stopped.stderr_text.find("resume"), std::string::npos) << stopped.stderr_text;
   EXPECT_FALSE(fs::exists(dir / "d.csv"));
   const size_t kept = lineCount(dir / "d.csv.progress");
   EXPECT_GT(kept, 2u);
-  EXPECT_LT(kept, 2u + 33u * 33u * 33u);
+  EXPECT_LT(kept, 2u + 42u * 42u * 42u);
   const Exit resumed = runCli(args, dir);
   ASSERT_EQ(resumed.status, 0) << resumed.stderr_text;
   expectSameDataset(readDatasetCsv((dir / "d.csv").string()),
-                    simulateDataset(PlatformKinematics(), BiotacLikeSensor(), 5.0));
+                    simulateDataset(PlatformKinematics(), BiotacLikeSensor(), 4.0));
   EXPECT_FALSE(fs::exists(dir / "d.csv.progress"));
 }
 

@@ -1,18 +1,46 @@
-// The paper's 27-condition objective evaluation in simulation (a shortened
-// recording: 10 Hz, one repetition): the trends the simulation reproduces —
-// error falls with more device DoF and with more neighbours — and the best
-// condition's error as % of full scale beside the paper's 3.0%.
+// The paper's 27-condition objective evaluation in simulation, shortened
+// (10 Hz, one repetition; onetip on a coarse 15-deg grid), and the trends of
+// its Fig. 7 that this simulation really reproduces (docs/haptics/README.md
+// says which do not, and why):
+//   BioTac-like: error falls with more device DoF and with more neighbours;
+//     at 3-DoF, n = 8 narrows the gap between the finest and coarsest step.
+//     (The step size itself barely matters for it: a 9-deg step moves the
+//     platform 0.24 mm, small beside what the device cannot reach.)
+//   onetip 5 x 5 grid: error falls with more DoF and, at 3-DoF, with a finer step.
+// The best condition's error as % of full scale is reported beside the paper's 3.0%.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <functional>
 #include <map>
+#include <tuple>
 
 #include "haptics/biotac_like_sensor.hpp"
 #include "haptics/display_grid.hpp"
 #include "haptics/objective_evaluation.hpp"
+#include "haptics/onetip_contact_sensor.hpp"
 
 using namespace onetip::haptics;
 
-TEST(ObjectiveEvaluation, ErrorFallsWithMoreDofAndMoreNeighbours) {
+namespace {
+using Key = std::tuple<double, int, int>;  // step, n, dof
+std::map<Key, ConditionSummary> byCondition(const std::vector<EvaluationRow>& rows) {
+  std::map<Key, ConditionSummary> out;
+  for (const auto& s : summarizeByCondition(rows))
+    out[{s.condition.step_deg, s.condition.neighbors, static_cast<int>(s.condition.dof)}] = s;
+  return out;
+}
+double meanOver(const std::map<Key, ConditionSummary>& c, const std::function<bool(const Key&)>& pick) {
+  double sum = 0.0;
+  int count = 0;
+  for (const auto& [k, s] : c)
+    if (pick(k)) sum += s.mean_normalized_error, ++count;
+  return sum / count;
+}
+}  // namespace
+
+TEST(ObjectiveEvaluation, BiotacErrorFallsWithMoreDofAndMoreNeighbours) {
   BiotacLikeOptions o;
   o.noise_counts = 2.0;
   const BiotacLikeSensor collection(o);
@@ -27,26 +55,43 @@ TEST(ObjectiveEvaluation, ErrorFallsWithMoreDofAndMoreNeighbours) {
   options.interactions.repetitions = 1;
   const auto rows = runObjectiveEvaluation(full, remote, in_device, device, options);
   ASSERT_EQ(rows.size(), 27u * 6u);
-  const auto summary = summarizeByCondition(rows);
-  ASSERT_EQ(summary.size(), 27u);
+  const auto c = byCondition(rows);
+  ASSERT_EQ(c.size(), 27u);
 
-  std::map<int, double> by_dof, by_n;
+  auto dof = [&](int d) { return meanOver(c, [d](const Key& k) { return std::get<2>(k) == d; }); };
+  auto neighbours = [&](int n) { return meanOver(c, [n](const Key& k) { return std::get<1>(k) == n; }); };
+  EXPECT_GT(dof(1), dof(2));
+  EXPECT_GT(dof(2), dof(3));
+  EXPECT_GT(neighbours(1), neighbours(4));
+  EXPECT_GT(neighbours(4), neighbours(8));
+  auto e = [&](double step, int n, int d) { return c.at({step, n, d}).mean_normalized_error; };
+  EXPECT_LT(std::abs(e(9, 8, 3) - e(3, 8, 3)), std::abs(e(9, 1, 3) - e(3, 1, 3)));
+
   double best = 1e9;
-  for (const auto& s : summary) {
-    by_dof[static_cast<int>(s.condition.dof)] += s.mean_normalized_error / 9.0;
-    by_n[s.condition.neighbors] += s.mean_normalized_error / 9.0;
-    best = std::min(best, s.mean_percent_full_scale);
-  }
-  EXPECT_GT(by_dof[1], by_dof[2]);
-  EXPECT_GT(by_dof[2], by_dof[3]);
-  EXPECT_GT(by_n[1], by_n[4]);
-  EXPECT_GT(by_n[4], by_n[8]);
+  for (const auto& [k, s] : c) best = std::min(best, s.mean_percent_full_scale);
   // Paper: 3.0% of the 12-bit full scale in its best condition. The simulation
   // has no sensor drift or placement error, so it must do at least as well.
   EXPECT_LT(best, 3.0);
   RecordProperty("best_percent_full_scale", std::to_string(best));
-  for (const auto& r : rows) {
-    EXPECT_GE(r.normalized_error, 0.0);
-    EXPECT_GT(r.dataset_rows, 0u);
+}
+
+TEST(ObjectiveEvaluation, OnetipErrorFallsWithMoreDofAndAFinerStep) {
+  const OnetipContactSensor sensor;  // deterministic: one instance serves all three roles
+  const PlatformKinematics device;
+  const TactileDataset full = simulateDataset(device, sensor, 15.0);  // 1,331 rows
+  ObjectiveEvaluationOptions options;
+  options.steps_deg = {15.0, 30.0};
+  options.neighbors = {1, 4};
+  options.interactions.rate_hz = 5.0;
+  options.interactions.repetitions = 1;
+  const auto c = byCondition(runObjectiveEvaluation(full, sensor, sensor, device, options));
+  ASSERT_EQ(c.size(), 12u);
+  auto dof = [&](int d) { return meanOver(c, [d](const Key& k) { return std::get<2>(k) == d; }); };
+  EXPECT_GT(dof(1), dof(2));
+  EXPECT_GT(dof(2), dof(3));
+  for (int n : {1, 4}) EXPECT_LT(c.at({15.0, n, 3}).mean_normalized_error, c.at({30.0, n, 3}).mean_normalized_error);
+  for (const auto& [k, s] : c) {
+    EXPECT_GT(s.mean_percent_full_scale, 0.0);
+    EXPECT_LT(s.mean_percent_full_scale, 100.0);
   }
 }

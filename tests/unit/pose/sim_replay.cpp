@@ -39,37 +39,39 @@ Recording record(const sim::Scenario& scenario, const ReplayOptions& options) {
   return out;
 }
 
+ReplayFrame replayFrame(const sim::GroundTruthFrame& f, const input::TrackerResult& r, int marker_count) {
+  ReplayFrame out;
+  out.t = f.t;
+  out.gt_contact = f.in_contact;
+  out.gt_state = f.state;
+  out.gt = f.input;
+  out.gt_contact_markers = f.contact;
+  out.gt_slip = f.slip;
+  out.contact = r.contact;
+  out.state = r.state;
+  out.raw = r.raw;
+  out.composed = r.composed;
+  out.euler_sum = r.euler_sum;
+  out.out_of_range = r.out_of_range;
+  out.model = r.step.model;
+  out.regions = static_cast<int>(r.field.regions.size());
+  out.region.assign(static_cast<size_t>(marker_count), 0);
+  out.slip.assign(static_cast<size_t>(marker_count), 0);
+  if (r.step.active) {
+    for (int id : r.field.regions[static_cast<size_t>(r.step.region)].markers) out.region[static_cast<size_t>(id)] = 1;
+    for (size_t i = 0; i < r.step.labels.size(); ++i)
+      out.slip[i] = r.step.labels[i] == contact::MarkerLabel::slip ? 1 : 0;
+  }
+  for (const auto& e : r.events) out.events.push_back(e.type);
+  return out;
+}
+
 std::vector<ReplayFrame> track(const Recording& recording, const input::PoseTrackerOptions& options) {
   input::PoseTracker tracker(options);
   std::vector<ReplayFrame> frames;
   for (size_t k = 0; k < recording.frames.size(); ++k) {
-    const sim::GroundTruthFrame& f = recording.truth[k];
     const MarkerField& now = recording.frames[k];
-    const input::TrackerResult r = tracker.update(now, recording.rest, f.t);
-    ReplayFrame out;
-    out.t = f.t;
-    out.gt_contact = f.in_contact;
-    out.gt_state = f.state;
-    out.gt = f.input;
-    out.gt_contact_markers = f.contact;
-    out.gt_slip = f.slip;
-    out.contact = r.contact;
-    out.state = r.state;
-    out.raw = r.raw;
-    out.composed = r.composed;
-    out.euler_sum = r.euler_sum;
-    out.out_of_range = r.out_of_range;
-    out.model = r.step.model;
-    out.regions = static_cast<int>(r.field.regions.size());
-    out.region.assign(static_cast<size_t>(now.size()), 0);
-    out.slip.assign(static_cast<size_t>(now.size()), 0);
-    if (r.step.active) {
-      for (int id : r.field.regions[static_cast<size_t>(r.step.region)].markers) out.region[static_cast<size_t>(id)] = 1;
-      for (size_t i = 0; i < r.step.labels.size(); ++i)
-        out.slip[i] = r.step.labels[i] == contact::MarkerLabel::slip ? 1 : 0;
-    }
-    for (const auto& e : r.events) out.events.push_back(e.type);
-    frames.push_back(std::move(out));
+    frames.push_back(replayFrame(recording.truth[k], tracker.update(now, recording.rest, recording.truth[k].t), now.size()));
   }
   return frames;
 }

@@ -3,9 +3,12 @@
 //
 // The simulator's field-level markers are exact; the vision front end's 3-D
 // error is imitated by Gaussian noise of noise_mm per axis on every marker
-// (current frames and the rest field, S, mm; default 0.012 mm per axis, about
-// 0.02 mm 3-D RMS) and, when drop_fraction > 0, by losing that fraction of the
-// markers at random in every frame. Seeds are fixed, so runs repeat exactly.
+// (current frames and the rest field, S, mm). Default 0.0006 mm per axis
+// (1.0e-3 mm 3-D RMS): what the rendered image path measures at the
+// simulator's default image noise (test_pose_end_to_end.cpp prints it: per
+// axis 0.0003-0.0005 in x, y and 0.0007-0.0009 in z, 3-D 0.0008-0.0010 mm).
+// When drop_fraction > 0, that fraction of the markers is lost at random in
+// every frame. Seeds are fixed, so runs repeat exactly.
 #pragma once
 
 #include <cstdint>
@@ -19,7 +22,7 @@
 namespace onetip::poseval {
 
 struct ReplayOptions {
-  double noise_mm = 0.012;
+  double noise_mm = 0.0006;
   double drop_fraction = 0.0;
   unsigned seed = 7;
   input::PoseTrackerOptions tracker;
@@ -52,6 +55,8 @@ struct Recording {
 };
 
 sim::Scenario sampleScenario(const std::string& name);  // samples/scenarios/<name>.yaml
+// One frame's ground truth next to the tracker's result for it.
+ReplayFrame replayFrame(const sim::GroundTruthFrame& truth, const input::TrackerResult& result, int marker_count);
 Recording record(const sim::Scenario& scenario, const ReplayOptions& options = {});
 // Runs a recording through a PoseTracker with options.tracker.
 std::vector<ReplayFrame> track(const Recording& recording, const input::PoseTrackerOptions& options = {});

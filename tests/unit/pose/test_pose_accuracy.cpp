@@ -1,6 +1,9 @@
-// The paper's Sec. IV experiments replayed on the simulator at the default
-// noise (0.012 mm per axis per marker): translation, rotation, sliding
-// linearity, stick/slip labels, contact region and the two accumulations.
+// The paper's Sec. IV experiments replayed on the simulator's marker fields at
+// the default noise (0.0006 mm per axis per marker, the vision front end's
+// measured error, sim_replay.hpp): translation, rotation, sliding linearity,
+// stick/slip labels, contact region and the two accumulations, each against
+// the issue's figure. (test_pose_end_to_end.cpp repeats the main ones through
+// rendered images.)
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -35,35 +38,28 @@ void print(const char* what, const AxisRmse& r) {
 
 class Translation : public ::testing::TestWithParam<std::string> {};
 
-// Issue target: <= 0.05 mm per axis. Met by press, slide_x and slide_y (within
-// the range); the back-and-forth sweeps are not: sweep_x 0.15 mm in dx, sweep_y
-// 0.077 mm in dy (the turns at +-1.5 mm are at the edge of gross slip, where
-// the footprint catch-up overshoots, see docs/pose/README.md). They are held to
-// their measured levels as regression bounds.
+// Issue: translation RMSE <= 0.05 mm per axis over |dx|, |dy| <= 1.5 mm and
+// dz in [0, 3] mm, including the back-and-forth sweeps (turns at +-1.5 mm, at
+// the edge of gross slip).
 TEST_P(Translation, RmseWithinRange) {
   const auto r = axisRmse(replayed(GetParam()), composedOf, inTranslationRange);
   print(GetParam().c_str(), r);
   ASSERT_GT(r.frames, 40);
-  const std::map<std::string, double> bound{{"sweep_x", 0.17}, {"sweep_y", 0.09}};
-  const double limit = bound.count(GetParam()) ? bound.at(GetParam()) : 0.05;
-  for (size_t k = 0; k < 3; ++k) EXPECT_LE(r.rmse[k], limit) << "axis " << k;
+  for (size_t k = 0; k < 3; ++k) EXPECT_LE(r.rmse[k], 0.05) << "axis " << k;
 }
 INSTANTIATE_TEST_SUITE_P(Pose, Translation, ::testing::Values("press", "slide_x", "slide_y", "sweep_x", "sweep_y"));
 
 class Rotation : public ::testing::TestWithParam<std::string> {};
 
-// Issue target: <= 1.0 deg per axis (paper: 2.6 deg roll/pitch, 1.8 deg yaw).
-// Measured at 0.5 mm depth: pitch and roll ~1.1-1.3 deg, yaw 4.4 deg (the
-// twist slips over most of the small contact, so only the centre marker
-// sticks and Eq. 13-15 leave yaw unobserved). Held to measured bounds.
+// Issue: rotation RMSE <= 1.0 deg per axis over yaw in [-15, 15] and pitch,
+// roll in [-40, 40] deg at 0.5 mm depth (paper: 2.6 deg roll/pitch, 1.8 deg yaw).
 TEST_P(Rotation, RmseWithinWorkingRange) {
   const auto r = axisRmse(replayed(GetParam()), composedOf, [](const ReplayFrame& f) {
     return std::abs(f.gt.yaw) <= 15 && std::abs(f.gt.pitch) <= 40 && std::abs(f.gt.roll) <= 40;
   });
   print(GetParam().c_str(), r);
   ASSERT_GT(r.frames, 100);
-  const std::map<std::string, double> bound{{"twist", 5.0}, {"pitch", 1.5}, {"roll", 1.6}};
-  for (size_t k = 3; k < 6; ++k) EXPECT_LE(r.rmse[k], bound.at(GetParam())) << "axis " << k;
+  for (size_t k = 3; k < 6; ++k) EXPECT_LE(r.rmse[k], 1.0) << "axis " << k;
 }
 INSTANTIATE_TEST_SUITE_P(Pose, Rotation, ::testing::Values("twist", "pitch", "roll"));
 
@@ -72,8 +68,6 @@ class Sliding : public ::testing::TestWithParam<std::pair<std::string, int>> {};
 // Sliding in x or y at 1 mm depth (gross slip from 1.5 mm): the issue asks for
 // the output within 10% of the true displacement up to 3 mm (here with a
 // 0.05 mm floor, the translation accuracy, for the first tenths of a mm).
-// Measured: within 10% except around the onset of gross slip (1.4-1.6 mm),
-// where the worst is 10.6% (x) and 11.7% (y); held at 12% as a regression bound.
 TEST_P(Sliding, LinearUpToThreeMillimetres) {
   const auto [name, axis] = GetParam();
   int checked = 0;
@@ -84,7 +78,7 @@ TEST_P(Sliding, LinearUpToThreeMillimetres) {
     if (truth <= 0 || truth > 3.0 || f.gt.dz < 0.8) continue;
     const double error = std::abs(f.composed.asArray()[static_cast<size_t>(axis)] - truth);
     worst = std::max(worst, error / std::max(truth, 0.5));
-    EXPECT_LE(error, std::max(0.12 * truth, 0.05)) << name << " at " << truth << " mm";
+    EXPECT_LE(error, std::max(0.1 * truth, 0.05)) << name << " at " << truth << " mm";
     ++checked;
   }
   std::printf("%s: worst relative error %.3f over %d frames\n", name.c_str(), worst, checked);
@@ -123,6 +117,8 @@ TEST(ContactRegion, IouAgainstTheTrueContact) {
 // scenarios the two differ only through estimation noise (the exact-increment
 // comparison, where composition is exact and the Euler sum is not, is in
 // test_input); composition must never be worse beyond 0.015 mm / 0.1 deg.
+// (Largest gap measured: roll dz, composed 0.043 vs Euler 0.033 mm, where the
+// simulator's marker-layer offset biases dx/dz of every rotation, README.)
 TEST(Accumulation, CompositionAtLeastAsAccurateAsEulerSum) {
   const auto all = [](const ReplayFrame&) { return true; };
   for (const char* name : {"press", "slide_x", "sweep_y", "twist", "roll", "pitch", "demo_touch"}) {

@@ -1,0 +1,243 @@
+// bindings/c/src/onetip_c.cpp — the C ABI (onetip_c.h) over the public C++
+// API. Every entry point runs its body inside boundary(): no exception leaves,
+// each failure becomes an onetip_error_kind and a message.
+#include <chrono>
+#include <cmath>
+
+#include "c_handles.hpp"
+#include "c_structs.hpp"
+#include "onetip/version.hpp"
+#include "onetip_c.h"
+
+using namespace onetip;
+using namespace onetip::c_api;
+
+namespace {
+
+template <typename Fn>
+std::int32_t boundary(onetip_error* error, Fn&& fn) noexcept {
+  try {
+    fn();
+    return reportOk(error);
+  } catch (...) {
+    return reportCurrentException(error);
+  }
+}
+
+std::string optionalString(const char* s) { return s ? std::string(s) : std::string(); }
+
+void refuseInsideCallback(const CSensor& s, const char* call) {
+  if (CallbackScope::inside(&s))
+    throw CError(ONETIP_ERROR_STATE, std::string(call) + ": called from inside the sensor's own callback");
+}
+
+}  // namespace
+
+extern "C" {
+
+ONETIP_C_API uint32_t onetip_abi_version(void) { return ONETIP_C_ABI_VERSION; }
+ONETIP_C_API const char* onetip_version_string(void) { return versionString(); }
+ONETIP_C_API double onetip_clock_seconds(void) { return clockSeconds(); }
+
+ONETIP_C_API const char* onetip_error_kind_name(int32_t kind) {
+  static const char* const names[] = {"ok", "null_argument", "invalid_handle", "version", "input", "state", "internal"};
+  return kind >= 0 && kind < 7 ? names[kind] : "unknown";
+}
+
+ONETIP_C_API const char* onetip_event_type_name(int32_t type) {
+  return type >= 0 && type <= ONETIP_EVENT_ERROR ? toString(static_cast<EventType>(type)).data() : "unknown";
+}
+
+ONETIP_C_API const char* onetip_contact_state_name(int32_t state) {
+  return state >= 0 && state <= ONETIP_STATE_SLIP ? toString(static_cast<ContactState>(state)).data() : "unknown";
+}
+
+ONETIP_C_API int32_t onetip_options_default(uint32_t abi_version, onetip_options* out, onetip_error* error) {
+  return boundary(error, [&] {
+    requireAbiVersion(abi_version);
+    requireNonNull(out, "onetip_options_default: out");
+    *out = toC(SensorOptions{});
+  });
+}
+
+ONETIP_C_API int32_t onetip_options_load(uint32_t abi_version, const char* path, onetip_options* out,
+                                         onetip_error* error) {
+  return boundary(error, [&] {
+    requireAbiVersion(abi_version);
+    requireNonNull(path, "onetip_options_load: path");
+    requireNonNull(out, "onetip_options_load: out");
+    *out = toC(SensorOptions::load(path));
+  });
+}
+
+ONETIP_C_API int32_t onetip_options_save(uint32_t abi_version, const onetip_options* options, const char* path,
+                                         onetip_error* error) {
+  return boundary(error, [&] {
+    requireAbiVersion(abi_version);
+    requireNonNull(options, "onetip_options_save: options");
+    requireNonNull(path, "onetip_options_save: path");
+    fromC(*options).save(path);
+  });
+}
+
+ONETIP_C_API int32_t onetip_sensor_create(uint32_t abi_version, const char* source, const char* calibration,
+                                          const char* pattern, const char* reference, const onetip_options* options,
+                                          onetip_sensor** out, onetip_error* error) {
+  if (out) *out = nullptr;
+  return boundary(error, [&] {
+    requireAbiVersion(abi_version);
+    requireNonNull(out, "onetip_sensor_create: out");
+    requireNonNull(source, "onetip_sensor_create: source");
+    const SensorOptions o = options ? fromC(*options) : SensorOptions{};
+    const SensorConfig config{source, optionalString(calibration), optionalString(pattern), optionalString(reference)};
+    *out = registerSensor(std::make_shared<CSensor>(config, o));
+  });
+}
+
+ONETIP_C_API int32_t onetip_sensor_destroy(onetip_sensor* sensor, onetip_error* error) {
+  return boundary(error, [&] {
+    if (!sensor) return;
+    std::shared_ptr<CSensor> s = unregisterSensor(sensor);
+    s->sensor.stop();
+  });
+}
+
+ONETIP_C_API int32_t onetip_sensor_start(onetip_sensor* sensor, onetip_error* error) {
+  return boundary(error, [&] {
+    const auto s = lookupSensor(sensor);
+    refuseInsideCallback(*s, "onetip_sensor_start");
+    s->sensor.start();
+  });
+}
+
+ONETIP_C_API int32_t onetip_sensor_stop(onetip_sensor* sensor, onetip_error* error) {
+  return boundary(error, [&] {
+    const auto s = lookupSensor(sensor);
+    refuseInsideCallback(*s, "onetip_sensor_stop");
+    s->sensor.stop();
+  });
+}
+
+ONETIP_C_API int32_t onetip_sensor_is_running(onetip_sensor* sensor, int32_t* out, onetip_error* error) {
+  return boundary(error, [&] {
+    requireNonNull(out, "onetip_sensor_is_running: out");
+    *out = lookupSensor(sensor)->sensor.running() ? 1 : 0;
+  });
+}
+
+ONETIP_C_API int32_t onetip_sensor_is_finished(onetip_sensor* sensor, int32_t* out, onetip_error* error) {
+  return boundary(error, [&] {
+    requireNonNull(out, "onetip_sensor_is_finished: out");
+    *out = lookupSensor(sensor)->sensor.finished() ? 1 : 0;
+  });
+}
+
+ONETIP_C_API int32_t onetip_sensor_wait_finished(onetip_sensor* sensor, double timeout_s, int32_t* finished,
+                                                 onetip_error* error) {
+  return boundary(error, [&] {
+    requireNonNull(finished, "onetip_sensor_wait_finished: finished");
+    *finished = 0;
+    const auto s = lookupSensor(sensor);
+    if (std::isnan(timeout_s)) throw Error(ErrorKind::input, "onetip_sensor_wait_finished: timeout_s is NaN");
+    *finished = s->sensor.waitFinished(timeout_s) ? 1 : 0;
+  });
+}
+
+ONETIP_C_API int32_t onetip_sensor_set_event_callback(onetip_sensor* sensor, onetip_event_callback callback,
+                                                      void* user, onetip_error* error) {
+  return boundary(error, [&] {
+    const auto s = lookupSensor(sensor);
+    if (!callback) return s->sensor.onEvent({});
+    const CSensor* owner = s.get();
+    s->sensor.onEvent([callback, user, owner](const Event& e) {
+      const onetip_event c = toC(e);
+      CallbackScope scope(owner);
+      callback(&c, user);
+    });
+  });
+}
+
+ONETIP_C_API int32_t onetip_sensor_set_frame_callback(onetip_sensor* sensor, onetip_frame_callback callback,
+                                                      void* user, onetip_error* error) {
+  return boundary(error, [&] {
+    const auto s = lookupSensor(sensor);
+    if (!callback) return s->sensor.onFrame({});
+    const CSensor* owner = s.get();
+    s->sensor.onFrame([callback, user, owner](const FrameResult& f) {
+      const onetip_frame c = toC(f);
+      const std::vector<onetip_marker> markers = markersToC(f);
+      CallbackScope scope(owner);
+      callback(&c, markers.data(), static_cast<int32_t>(markers.size()), user);
+    });
+  });
+}
+
+ONETIP_C_API int32_t onetip_sensor_poll_event(onetip_sensor* sensor, onetip_event* out, int32_t* got,
+                                              onetip_error* error) {
+  if (got) *got = 0;
+  return boundary(error, [&] {
+    requireNonNull(out, "onetip_sensor_poll_event: out");
+    requireNonNull(got, "onetip_sensor_poll_event: got");
+    Event e;
+    if (lookupSensor(sensor)->sensor.pollEvent(e)) {
+      *out = toC(e);
+      *got = 1;
+    }
+  });
+}
+
+ONETIP_C_API int32_t onetip_sensor_wait_event(onetip_sensor* sensor, double timeout_s, onetip_event* out,
+                                              int32_t* got, onetip_error* error) {
+  if (got) *got = 0;
+  return boundary(error, [&] {
+    requireNonNull(out, "onetip_sensor_wait_event: out");
+    requireNonNull(got, "onetip_sensor_wait_event: got");
+    const auto s = lookupSensor(sensor);
+    if (std::isnan(timeout_s)) throw Error(ErrorKind::input, "onetip_sensor_wait_event: timeout_s is NaN");
+    Event e;
+    if (s->sensor.waitEvent(e, timeout_s)) {
+      *out = toC(e);
+      *got = 1;
+    }
+  });
+}
+
+ONETIP_C_API int32_t onetip_sensor_poll_frame(onetip_sensor* sensor, onetip_frame* out, onetip_marker* markers,
+                                              int32_t capacity, int32_t* marker_count, int32_t* got,
+                                              onetip_error* error) {
+  if (got) *got = 0;
+  if (marker_count) *marker_count = 0;
+  return boundary(error, [&] {
+    requireNonNull(out, "onetip_sensor_poll_frame: out");
+    requireNonNull(got, "onetip_sensor_poll_frame: got");
+    requireNonNull(marker_count, "onetip_sensor_poll_frame: marker_count");
+    if (capacity < 0) throw Error(ErrorKind::input, "onetip_sensor_poll_frame: capacity is negative");
+    if (capacity > 0) requireNonNull(markers, "onetip_sensor_poll_frame: markers (capacity > 0)");
+    FrameResult f;
+    if (!lookupSensor(sensor)->sensor.pollFrame(f)) return;
+    *out = toC(f);
+    *marker_count = static_cast<int32_t>(f.markers.size());
+    if (capacity > 0) {
+      const std::vector<onetip_marker> all = markersToC(f);
+      std::copy_n(all.begin(), std::min<std::size_t>(all.size(), static_cast<std::size_t>(capacity)), markers);
+    }
+    *got = 1;
+  });
+}
+
+ONETIP_C_API int32_t onetip_sensor_rezero(onetip_sensor* sensor, onetip_error* error) {
+  return boundary(error, [&] { lookupSensor(sensor)->sensor.reZero(); });
+}
+
+ONETIP_C_API int32_t onetip_sensor_rereference(onetip_sensor* sensor, onetip_error* error) {
+  return boundary(error, [&] { lookupSensor(sensor)->sensor.reReference(); });
+}
+
+ONETIP_C_API int32_t onetip_sensor_get_stats(onetip_sensor* sensor, onetip_stats* out, onetip_error* error) {
+  return boundary(error, [&] {
+    requireNonNull(out, "onetip_sensor_get_stats: out");
+    *out = toC(lookupSensor(sensor)->sensor.stats());
+  });
+}
+
+}  // extern "C"

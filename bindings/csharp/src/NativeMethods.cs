@@ -1,0 +1,86 @@
+// NativeMethods: the C ABI of libonetip (onetip_c.h) as P/Invoke entry
+// points. The library is found by the name "onetip": libonetip.so through
+// the dynamic loader's path (LD_LIBRARY_PATH, Unity's Plugins folder) or a
+// Mono dllmap; onetip.dll on Windows.
+using System;
+using System.Runtime.InteropServices;
+
+namespace Onetip.Interop
+{
+    internal static class NativeMethods
+    {
+        const string Library = "onetip";
+
+        /// <summary>ONETIP_C_ABI_VERSION of the header this wrapper was written against.</summary>
+        internal const uint AbiVersion = 1;
+
+        [UnmanagedFunctionPointer(CallingConvention.Cdecl)]
+        internal delegate void EventCallback(IntPtr evt, IntPtr user);
+        [UnmanagedFunctionPointer(CallingConvention.Cdecl)]
+        internal delegate void FrameCallback(IntPtr frame, IntPtr markers, int markerCount, IntPtr user);
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern uint onetip_abi_version();
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern IntPtr onetip_version_string();
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern double onetip_clock_seconds();
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern int onetip_options_default(uint abi, [Out] SensorOptions options, out NativeError error);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern int onetip_options_load(uint abi, [MarshalAs(UnmanagedType.LPStr)] string path,
+                                                       [Out] SensorOptions options, out NativeError error);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern int onetip_options_save(uint abi, [In] SensorOptions options,
+                                                       [MarshalAs(UnmanagedType.LPStr)] string path, out NativeError error);
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern int onetip_sensor_create(uint abi, [MarshalAs(UnmanagedType.LPStr)] string source,
+                                                        [MarshalAs(UnmanagedType.LPStr)] string calibration,
+                                                        [MarshalAs(UnmanagedType.LPStr)] string pattern,
+                                                        [MarshalAs(UnmanagedType.LPStr)] string reference,
+                                                        [In] SensorOptions options, out SensorHandle sensor,
+                                                        out NativeError error);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern int onetip_sensor_destroy(IntPtr sensor, out NativeError error);
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern int onetip_sensor_start(SensorHandle sensor, out NativeError error);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern int onetip_sensor_stop(SensorHandle sensor, out NativeError error);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern int onetip_sensor_is_running(SensorHandle sensor, out int running, out NativeError error);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern int onetip_sensor_is_finished(SensorHandle sensor, out int finished, out NativeError error);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern int onetip_sensor_wait_finished(SensorHandle sensor, double timeoutS, out int finished,
+                                                               out NativeError error);
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern int onetip_sensor_set_event_callback(SensorHandle sensor, EventCallback callback,
+                                                                    IntPtr user, out NativeError error);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern int onetip_sensor_set_frame_callback(SensorHandle sensor, FrameCallback callback,
+                                                                    IntPtr user, out NativeError error);
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern int onetip_sensor_poll_event(SensorHandle sensor, out NativeEvent evt, out int got,
+                                                            out NativeError error);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern int onetip_sensor_wait_event(SensorHandle sensor, double timeoutS, out NativeEvent evt,
+                                                            out int got, out NativeError error);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern int onetip_sensor_poll_frame(SensorHandle sensor, out NativeFrame frame,
+                                                            [In, Out] Marker[] markers, int capacity,
+                                                            out int markerCount, out int got, out NativeError error);
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern int onetip_sensor_rezero(SensorHandle sensor, out NativeError error);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern int onetip_sensor_rereference(SensorHandle sensor, out NativeError error);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern int onetip_sensor_get_stats(SensorHandle sensor, out NativeStats stats,
+                                                           out NativeError error);
+    }
+}

@@ -1,0 +1,58 @@
+// viewer/viewer_session.hpp — `onetip view`: frames from a source through the
+// pipeline (pipeline::FrameProcessor) and onto the screen, headless image,
+// recording or all three.
+//
+// Input: any frame source spec (capture/open_frame_source.hpp; "sim:FILE"
+// scenarios included) or "sim:virtual", the simulated sensor pressed by the
+// mouse-and-keyboard finger (viewer/virtual_finger.hpp). For simulated
+// inputs the calibration and pattern default to the simulator's own; other
+// sources need both files. The first usable frame is the rest state.
+// Output: a GLFW window, or — with a screenshot, without a display, or when
+// asked — a headless EGL context drawing into an offscreen framebuffer.
+// frames > 0 stops after that many drawn frames; the screenshot is the last
+// one. Times are milliseconds on the calling thread (steady clock).
+#pragma once
+
+#include <functional>
+#include <opencv2/core.hpp>
+#include <string>
+
+#include "viewer/viewer_frame.hpp"
+#include "viewer/viewer_renderer.hpp"
+
+namespace onetip::viewer {
+
+struct ViewerOptions {
+  std::string input;           // required
+  std::string calib, pattern;  // required unless the input is simulated
+  std::string screenshot;      // PNG of the last drawn frame (implies headless)
+  std::string record;          // video (.mp4, .avi) or a folder of PNGs
+  int frames = 0;              // 0: until the source ends or the window closes
+  cv::Size window{1280, 720};
+  bool headless = false;
+  ViewerRendererOptions render;
+  void validate() const;       // throws InputError naming the bad option
+};
+
+struct ViewerReport {
+  int drawn = 0;                 // frames drawn
+  bool headless = false;
+  std::string gl;                // GL_RENDERER, GL_VERSION
+  double loop_fps = 0;           // drawn frames / wall time of the loop
+  double median_source_ms = 0;   // getting the frame (decode or simulate)
+  double median_process_ms = 0;  // the pipeline
+  double median_draw_ms = 0;     // scene building + GL drawing, finished (glFinish)
+  double median_readback_ms = 0; // reading the image back (0 when not needed)
+};
+
+// Sees every drawn frame as the window shows it (BGR, top-down) with what it showed.
+using FrameObserver = std::function<void(const cv::Mat& bgr, const ViewerFrame& frame)>;
+
+// Throws InputError for bad options or input; std::runtime_error when no
+// OpenGL 3.3 core context can be had.
+ViewerReport runViewer(const ViewerOptions& options, const FrameObserver& observer = {});
+
+// True when a window can be opened (an X11 or Wayland display is set).
+bool displayAvailable();
+
+}  // namespace onetip::viewer

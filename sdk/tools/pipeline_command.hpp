@@ -1,0 +1,32 @@
+// tools/pipeline_command.hpp — what the commands that serve the pipeline's
+// output to other programs (`onetip spnav`, `onetip joystick`) share: the
+// input options, opening the pipeline, and running it until SIGINT/SIGTERM or
+// the end of the source.
+//
+// Options: --input SRC (required), --calib C --pattern P (both, or neither for
+// sim: sources), --reference IMG, --options OPTIONS.yaml (onetip/sensor_options.hpp
+// keys; e.g. `lossless: 1` to process every frame of a file or scenario).
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <vector>
+
+#include "command.hpp"
+#include "pipeline/pipeline.hpp"
+
+namespace onetip::tools {
+
+std::vector<OptionSpec> pipelineInputOptions();
+std::unique_ptr<pipeline::Pipeline> openPipelineFromArgs(const Args& args);
+
+// Starts `p`, waits until SIGINT/SIGTERM (handlers installed for the call) or
+// the source ends, then stops it. `ready` runs after the handlers are in place
+// and before start (e.g. to wait for a first client); returning false stops
+// without starting. Prints a one-line summary to stderr. Returns 0, or 130
+// after an interrupt.
+int runPipelineUntilInterrupted(pipeline::Pipeline& p, const std::function<bool()>& ready = {});
+// True once SIGINT or SIGTERM arrived during runPipelineUntilInterrupted().
+bool interruptRequested() noexcept;
+
+}  // namespace onetip::tools

@@ -1,0 +1,61 @@
+// The viewer's drawing rate, headless (EGL; Mesa llvmpipe on machines without
+// a GPU): one pressed frame of demo_touch drawn again and again at 1280x720,
+// finished (glFinish), with and without reading the image back.
+#include <benchmark/benchmark.h>
+
+#include <memory>
+
+#include "sim/simulator.hpp"
+#include "viewer/egl_core_context.hpp"
+#include "viewer/gl_api.hpp"
+#include "viewer/offscreen_target.hpp"
+#include "viewer/viewer_renderer.hpp"
+#include "viewer/viewer_session.hpp"
+
+namespace {
+using namespace onetip;
+
+// A frame in contact (demo_touch at t = 1.17 s: pressed 1.5 mm, sliding).
+struct PressedFrame {
+  viewer::ViewerFrame frame;
+  StereoCalibration calib;
+  PressedFrame() {
+    viewer::ViewerOptions o;
+    o.input = std::string("sim:") + ONETIP_SOURCE_DIR + "/samples/scenarios/demo_touch.yaml";
+    o.frames = 36;
+    o.headless = true;
+    viewer::runViewer(o, [&](const cv::Mat&, const viewer::ViewerFrame& f) { frame = f; });
+    frame.camera = frame.camera.clone();
+    calib = sim::Simulator(sim::loadScenario(o.input.substr(4))).calibration();
+  }
+};
+
+const PressedFrame& pressed() {
+  static const PressedFrame p;
+  return p;
+}
+
+void drawLoop(benchmark::State& state, bool read_back) {
+  const PressedFrame& p = pressed();
+  const cv::Size size(1280, 720);
+  viewer::EglCoreContext context;
+  viewer::OffscreenTarget target(size);
+  target.bind();
+  viewer::ViewerRenderer renderer(p.calib);
+  for (auto _ : state) {
+    renderer.draw(p.frame, size);
+    if (read_back) benchmark::DoNotOptimize(viewer::readFramebufferBgr(size).data);
+    glFinish();
+  }
+  state.counters["fps"] = benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+  state.SetLabel(viewer::currentGlDescription());
+}
+
+void BM_ViewerDraw(benchmark::State& state) { drawLoop(state, false); }
+void BM_ViewerDrawAndReadBack(benchmark::State& state) { drawLoop(state, true); }
+BENCHMARK(BM_ViewerDraw)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(2.0);
+BENCHMARK(BM_ViewerDrawAndReadBack)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(2.0);
+
+}  // namespace
+
+BENCHMARK_MAIN();

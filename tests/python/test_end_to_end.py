@@ -1,0 +1,109 @@
+"""The simulated press through onetip.Sensor, compared frame by frame with
+`onetip process` (the C++ pipeline) on the same scenario."""
+import threading
+
+import numpy as np
+import pytest
+
+import onetip
+
+TOL = 2e-6  # pose.csv and markers.csv carry 6 decimals
+
+
+class PressRun:
+    """One lossless run of the press scenario: events through a callback and
+    through wait_event() at the same time, then every frame result."""
+
+    def __init__(self, scenario):
+        options = onetip.SensorOptions(lossless=True, event_queue_capacity=100000, frame_queue_capacity=1000)
+        self.callback_events, self.callback_threads = [], set()
+        self.polled_events, self.frames = [], []
+        with onetip.Sensor(f"sim:{scenario}", options=options) as sensor:
+            sensor.on_event(self._on_event)
+            sensor.start()
+            while (event := sensor.wait_event(5.0)) is not None:
+                self.polled_events.append(event)
+            assert sensor.wait_finished(60.0)
+            while (frame := sensor.poll_frame()) is not None:
+                self.frames.append(frame)
+            self.stats = sensor.stats()
+
+    def _on_event(self, event):
+        self.callback_threads.add(threading.get_ident())
+        self.callback_events.append(event)
+
+    def of_type(self, kind):
+        return [e for e in self.polled_events if e.type == kind]
+
+
+@pytest.fixture(scope="module")
+def press(press_scenario):
+    return PressRun(press_scenario)
+
+
+def test_contact_begins_and_ends_where_the_cpp_pipeline_says(press, cli_reference):
+    contact = cli_reference.contact_frames()
+    assert contact, "the reference saw no contact: the scenario or the CLI is broken"
+    begins = press.of_type(onetip.EventType.contact_begin)
+    ends = press.of_type(onetip.EventType.contact_end)
+    assert [e.frame for e in begins] == [contact[0]]
+    assert [e.frame for e in ends] == [contact[-1] + 1]
+    # The press goes 3.5 mm deep, past the 3 mm working range: that, and only that, is reported.
+    errors = press.of_type(onetip.EventType.error)
+    dz_limit = onetip.SensorOptions().working_range[2]
+    assert errors
+    for e in errors:
+        assert "working range" in e.message and cli_reference.raw(e.frame)[2] > dz_limit, e
+
+
+def test_every_input_event_matches_the_cpp_result_of_its_frame(press, cli_reference):
+    inputs = press.of_type(onetip.EventType.input)
+    assert [e.frame for e in inputs] == cli_reference.contact_frames()
+    for e in inputs:
+        assert e.input.shape == (6,) and e.input.dtype == np.float64
+        np.testing.assert_allclose(e.input, cli_reference.raw(e.frame), rtol=0, atol=TOL,
+                                   err_msg=f"frame {e.frame}")
+    depths = [e.input[2] for e in inputs]
+    assert max(depths) > 2.0  # the press goes 3.5 mm deep: the 6-D input really moved
+
+
+def test_callbacks_run_on_the_processing_thread_and_see_the_same_events(press):
+    assert press.callback_threads and threading.get_ident() not in press.callback_threads
+    assert [(e.type, e.frame) for e in press.callback_events] == [(e.type, e.frame) for e in press.polled_events]
+    for a, b in zip(press.callback_events, press.polled_events):
+        np.testing.assert_array_equal(a.input, b.input)
+
+
+def test_frame_results_match_the_cpp_pose_and_markers(press, cli_reference):
+    processed = [f for f in press.frames if f.status in (onetip.FrameStatus.ok, onetip.FrameStatus.reference)]
+    assert [f.frame for f in processed] == sorted(cli_reference.pose)
+    for f in processed:
+        np.testing.assert_allclose(f.raw, cli_reference.raw(f.frame), rtol=0, atol=TOL, err_msg=f"frame {f.frame}")
+        assert f.contact == (cli_reference.pose[f.frame]["contact"] == "1")
+        expected = np.array(cli_reference.markers[f.frame])
+        assert f.markers.shape == expected.shape and f.markers.shape[1] == 4
+        np.testing.assert_array_equal(f.markers[:, 0], expected[:, 0])
+        np.testing.assert_allclose(f.markers[:, 1:], expected[:, 1:], rtol=0, atol=TOL)
+
+
+def test_contact_field_is_the_motion_of_each_marker_from_rest(press):
+    rest = press.frames[0]
+    assert rest.status == onetip.FrameStatus.reference
+    deepest = max(press.frames, key=lambda f: f.max_normal_mm)
+    n = deepest.rows * deepest.cols
+    assert deepest.positions.shape == (n, 3) and deepest.displacements.shape == (n, 3)
+    known = deepest.displaced & rest.valid
+    assert known.sum() > n // 2
+    np.testing.assert_allclose(deepest.displacements[known], deepest.positions[known] - rest.positions[known],
+                               rtol=0, atol=1e-9)
+    assert np.isnan(deepest.displacements[~deepest.displaced]).all()
+    # the pad is pushed in (-z in S) under the finger, by up to about the press depth
+    assert -np.nanmin(deepest.displacements[:, 2]) > 2.0
+    assert (deepest.regions[known] >= 0).any() and (deepest.regions[~deepest.valid] == -1).all()
+
+
+def test_stats_count_every_frame(press, cli_reference):
+    assert press.stats.frames_processed == len(cli_reference.pose)
+    assert press.stats.frames_dropped == 0 and press.stats.callback_errors == 0
+    stages = {s.stage: s for s in press.stats.stages}
+    assert stages["process"].count == len(cli_reference.pose) and stages["process"].median_ms > 0
