@@ -8,28 +8,16 @@
 // a motion limited for safety, the working range exceeded), with a message.
 #pragma once
 
-#include <cstdint>
 #include <string>
-#include <string_view>
 
+#include "onetip/events.hpp"
 #include "onetip/types.hpp"
 
 namespace onetip::input {
 
-enum class EventType : std::uint8_t { contact_begin, contact_end, input, press, release, state_changed, error };
-
-constexpr std::string_view toString(EventType e) noexcept {
-  switch (e) {
-    case EventType::contact_begin: return "contact_begin";
-    case EventType::contact_end: return "contact_end";
-    case EventType::input: return "input";
-    case EventType::press: return "press";
-    case EventType::release: return "release";
-    case EventType::state_changed: return "state_changed";
-    case EventType::error: break;
-  }
-  return "error";
-}
+// The event kinds are the public API's (onetip/events.hpp), so the values
+// and their names are defined once.
+using EventType = ::onetip::EventType;
 
 struct InputEvent {
   EventType type = EventType::input;

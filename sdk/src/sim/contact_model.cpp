@@ -51,12 +51,19 @@ ContactModel::ContactModel(const PadLattice& lattice, std::vector<IndenterGeomet
       kernel_table_[static_cast<size_t>((db + nv - 1) * (2 * nu - 1) + (da + nu - 1))] = k;
     }
   nodes_.resize(static_cast<size_t>(lattice_.nodeCount()));
+  node_a_.resize(nodes_.size());
+  node_b_.resize(nodes_.size());
+  for (int i = 0; i < lattice_.nodeCount(); ++i) {
+    node_a_[static_cast<size_t>(i)] = i % nu;
+    node_b_[static_cast<size_t>(i)] = i / nu;
+  }
   u_cache_.assign(nodes_.size(), Eigen::Vector3d::Zero());
 }
 
 double ContactModel::kernel(int i, int j) const {
   const int nu = lattice_.nu();
-  const int da = i % nu - j % nu, db = i / nu - j / nu;
+  const int da = node_a_[static_cast<size_t>(i)] - node_a_[static_cast<size_t>(j)];
+  const int db = node_b_[static_cast<size_t>(i)] - node_b_[static_cast<size_t>(j)];
   return kernel_table_[static_cast<size_t>((db + lattice_.nv() - 1) * (2 * nu - 1) + (da + nu - 1))];
 }
 

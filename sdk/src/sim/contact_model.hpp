@@ -85,6 +85,7 @@ class ContactModel {
   std::vector<IndenterGeometry> indenters_;
   double max_substep_mm_;
   std::vector<double> kernel_table_;  // by lattice offset (da, db)
+  std::vector<int> node_a_, node_b_;  // lattice column and row of each node (no division per lookup)
   std::vector<NodeContact> nodes_;
   std::vector<int> active_;
   std::vector<Eigen::Vector3d> u_cache_;  // displacement of nodes near the indenters
