@@ -8,7 +8,9 @@ namespace onetip::capture {
 
 VideoSource::VideoSource(const std::string& path, FrameCheckOptions check)
     : path_(path), checker_(check) {
-  if (!video_.open(path) || !video_.isOpened())
+  // FFmpeg only: letting OpenCV probe every backend (GStreamer first) prints
+  // warnings for non-videos and leaks inside GStreamer's plugin scan.
+  if (!video_.open(path, cv::CAP_FFMPEG) || !video_.isOpened())
     throw InputError("input '" + path + "': not a readable video file");
   const double fps = video_.get(cv::CAP_PROP_FPS);
   if (fps > 0.0 && fps < 1e4) rate_hz_ = fps;
