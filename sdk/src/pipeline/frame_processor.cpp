@@ -1,6 +1,7 @@
 #include "pipeline/frame_processor.hpp"
 
 #include <chrono>
+#include <optional>
 
 #include "core/error.hpp"
 
@@ -60,6 +61,8 @@ struct FrameProcessor::Impl {
   // Finds and identifies markers in both views. The rest frame is searched
   // whole and its grid built from the corners' links; later frames are
   // searched only near each marker's prediction (and around lost ones).
+  std::optional<MarkerField> measure(const cv::Mat& frame, bool initialize, FrameResult& r);
+
   bool findMarkers(const vision::StereoViews& views, bool initialize, FrameResult& r, vision::ViewMarkers& ml,
                    vision::ViewMarkers& mr) {
     const auto t0 = Clock::now();
@@ -103,33 +106,43 @@ FrameProcessor::FrameProcessor(const StereoCalibration& calib, const MarkerPatte
 
 FrameProcessor::~FrameProcessor() = default;
 
+// The shared front half of a frame: check, split, find markers, triangulate.
+// Returns the triangulated markers (L), or nothing with r.status and
+// r.message saying why. Stage times are filled as they run.
+std::optional<MarkerField> FrameProcessor::Impl::measure(const cv::Mat& frame, bool initialize, FrameResult& r) {
+  if (std::string why = frameProblem(frame, calib); !why.empty()) {
+    r.message = why;
+    return std::nullopt;
+  }
+  const vision::StereoViews views = vision::splitViews(frame, calib);
+  vision::ViewMarkers ml, mr;
+  if (!findMarkers(views, initialize, r, ml, mr)) return std::nullopt;
+  const auto t0 = Clock::now();
+  vision::TriangulationResult tri = triangulator.triangulate(ml, mr);
+  r.times.triangulate = msSince(t0);
+  if (tri.markers.validCount() < options.min_markers) {
+    r.status = initialize ? FrameStatus::skipped : FrameStatus::lost;
+    r.message = std::string(initialize ? "rest frame: " : "") + "only " + std::to_string(tri.markers.validCount()) +
+                " markers triangulated";
+    return std::nullopt;
+  }
+  return std::move(tri.markers);
+}
+
 FrameResult FrameProcessor::setReference(const cv::Mat& frame, double t) {
   Impl& m = *impl_;
   const auto start = Clock::now();
   FrameResult r;
   r.t = t;
-  if (std::string why = frameProblem(frame, m.calib); !why.empty()) {
-    r.message = why;
-    return r;
-  }
-  const vision::StereoViews views = vision::splitViews(frame, m.calib);
-  vision::ViewMarkers ml, mr;
-  if (!m.findMarkers(views, true, r, ml, mr)) return r;
-  auto t0 = Clock::now();
-  const vision::TriangulationResult tri = m.triangulator.triangulate(ml, mr);
-  r.times.triangulate = msSince(t0);
-  if (tri.markers.validCount() < m.options.min_markers) {
-    r.status = FrameStatus::skipped;
-    r.message = "rest frame: only " + std::to_string(tri.markers.validCount()) + " markers triangulated";
-    return r;
-  }
-  m.S = SensorFrame::fromRestMarkers(tri.markers);
-  m.rest_S = m.S.toSensor(tri.markers);
+  const std::optional<MarkerField> rest_L = m.measure(frame, true, r);
+  r.times.process = msSince(start);
+  if (!rest_L) return r;
+  m.S = SensorFrame::fromRestMarkers(*rest_L);
+  m.rest_S = m.S.toSensor(*rest_L);
   m.has_reference = true;
   m.pose.reset();
   r.markers = m.rest_S;
   r.status = FrameStatus::reference;
-  r.times.process = msSince(start);
   return r;
 }
 
@@ -139,27 +152,13 @@ FrameResult FrameProcessor::process(const cv::Mat& frame, double t) {
   const auto start = Clock::now();
   FrameResult r;
   r.t = t;
-  if (std::string why = frameProblem(frame, m.calib); !why.empty()) {
-    r.message = why;
-    return r;
-  }
-  const vision::StereoViews views = vision::splitViews(frame, m.calib);
-  vision::ViewMarkers ml, mr;
-  if (!m.findMarkers(views, false, r, ml, mr)) {
+  const std::optional<MarkerField> now_L = m.measure(frame, false, r);
+  if (!now_L) {
     r.times.process = msSince(start);
     return r;
   }
+  r.markers = m.S.toSensor(*now_L);
   auto t0 = Clock::now();
-  const vision::TriangulationResult tri = m.triangulator.triangulate(ml, mr);
-  r.markers = m.S.toSensor(tri.markers);
-  r.times.triangulate = msSince(t0);
-  if (r.markers.validCount() < m.options.min_markers) {
-    r.status = FrameStatus::lost;
-    r.message = "only " + std::to_string(r.markers.validCount()) + " markers triangulated";
-    r.times.process = msSince(start);
-    return r;
-  }
-  t0 = Clock::now();
   r.pose = m.pose.update(r.markers, m.rest_S, t);
   const double contact_and_pose = msSince(t0);
   r.times.contact = r.pose.contact_ms;
