@@ -1,6 +1,5 @@
 #include "sim/contact_model.hpp"
 
-#include <Eigen/Cholesky>
 #include <cmath>
 
 #include "core/error.hpp"
@@ -51,27 +50,40 @@ ContactModel::ContactModel(const PadLattice& lattice, std::vector<IndenterGeomet
       kernel_table_[static_cast<size_t>((db + nv - 1) * (2 * nu - 1) + (da + nu - 1))] = k;
     }
   nodes_.resize(static_cast<size_t>(lattice_.nodeCount()));
-  node_a_.resize(nodes_.size());
-  node_b_.resize(nodes_.size());
+  kernel_base_.resize(nodes_.size());
+  kernel_offset_.resize(nodes_.size());
   for (int i = 0; i < lattice_.nodeCount(); ++i) {
-    node_a_[static_cast<size_t>(i)] = i % nu;
-    node_b_[static_cast<size_t>(i)] = i / nu;
+    const int a = i % nu, b = i / nu;
+    kernel_base_[static_cast<size_t>(i)] = (b + nv - 1) * (2 * nu - 1) + (a + nu - 1);
+    kernel_offset_[static_cast<size_t>(i)] = b * (2 * nu - 1) + a;
   }
   u_cache_.assign(nodes_.size(), Eigen::Vector3d::Zero());
+  u_cached_.assign(nodes_.size(), 0);
 }
 
 double ContactModel::kernel(int i, int j) const {
-  const int nu = lattice_.nu();
-  const int da = node_a_[static_cast<size_t>(i)] - node_a_[static_cast<size_t>(j)];
-  const int db = node_b_[static_cast<size_t>(i)] - node_b_[static_cast<size_t>(j)];
-  return kernel_table_[static_cast<size_t>((db + lattice_.nv() - 1) * (2 * nu - 1) + (da + nu - 1))];
+  return kernel_table_[static_cast<size_t>(kernel_base_[static_cast<size_t>(i)] - kernel_offset_[static_cast<size_t>(j)])];
+}
+
+const Eigen::LLT<Eigen::MatrixXd>& ContactModel::factorFor(const std::vector<int>& set, CachedFactor& slot) {
+  for (const CachedFactor* cached : {&normal_factor_, &stick_factor_})
+    if (!set.empty() && cached->set == set) return cached->llt;
+  const int n = static_cast<int>(set.size());
+  k_work_.resize(n, n);
+  for (int r = 0; r < n; ++r)
+    for (int c = 0; c <= r; ++c) k_work_(r, c) = kernel(set[static_cast<size_t>(r)], set[static_cast<size_t>(c)]);
+  slot.llt.compute(k_work_);  // reads the lower triangle only
+  slot.set = set;
+  return slot.llt;
 }
 
 void ContactModel::reset(const std::vector<Eigen::Isometry3d>& poses) {
   if (poses.size() != indenters_.size()) throw InputError("contact model: one pose per indenter is needed");
   for (auto& n : nodes_) n = NodeContact{};
   active_.clear();
+  gatherActiveTractions();
   u_cache_.assign(nodes_.size(), Eigen::Vector3d::Zero());
+  u_cached_.assign(nodes_.size(), 0);
   poses_ = poses;
 }
 
@@ -139,17 +151,11 @@ void ContactModel::solve(const std::vector<Eigen::Isometry3d>& poses) {
   // 2. Normal contact: conform on the active set, drop nodes that would pull.
   std::vector<int> A = candidates;
   Eigen::VectorXd p;
-  Eigen::LLT<Eigen::MatrixXd> normal_llt;  // factor of K_AA for the final A, reused below
   for (int iter = 0; iter < 12 && !A.empty(); ++iter) {
     const int n = static_cast<int>(A.size());
-    Eigen::MatrixXd K(n, n);
     Eigen::VectorXd delta(n);
-    for (int r = 0; r < n; ++r) {
-      delta[r] = pen[static_cast<size_t>(A[static_cast<size_t>(r)])].depth;
-      for (int c = 0; c <= r; ++c) K(r, c) = K(c, r) = kernel(A[static_cast<size_t>(r)], A[static_cast<size_t>(c)]);
-    }
-    normal_llt.compute(K);
-    p = normal_llt.solve(delta);
+    for (int r = 0; r < n; ++r) delta[r] = pen[static_cast<size_t>(A[static_cast<size_t>(r)])].depth;
+    p = factorFor(A, normal_factor_).solve(delta);
     std::vector<int> kept;
     for (int r = 0; r < n; ++r)
       if (p[r] > 0) kept.push_back(A[static_cast<size_t>(r)]);
@@ -189,17 +195,9 @@ void ContactModel::solve(const std::vector<Eigen::Isometry3d>& poses) {
       for (int r = 0; r < n; ++r)
         if (slipping[static_cast<size_t>(r)]) rhs.row(a) -= kernel(ia, A[static_cast<size_t>(r)]) * q.row(r);
     }
-    Eigen::MatrixX2d qs;
-    if (ns == n) {
-      qs = normal_llt.solve(rhs);  // all stick: K_SS is the normal system's K_AA
-    } else {
-      Eigen::MatrixXd K(ns, ns);
-      for (int a = 0; a < ns; ++a) {
-        const int ia = A[static_cast<size_t>(S[static_cast<size_t>(a)])];
-        for (int b = 0; b <= a; ++b) K(a, b) = K(b, a) = kernel(ia, A[static_cast<size_t>(S[static_cast<size_t>(b)])]);
-      }
-      qs = K.llt().solve(rhs);
-    }
+    std::vector<int> stick_nodes(S.size());
+    for (int a = 0; a < ns; ++a) stick_nodes[static_cast<size_t>(a)] = A[static_cast<size_t>(S[static_cast<size_t>(a)])];
+    const Eigen::MatrixX2d qs = factorFor(stick_nodes, stick_factor_).solve(rhs);
     bool changed = false;
     for (int a = 0; a < ns; ++a) {
       const int r = S[static_cast<size_t>(a)];
@@ -220,6 +218,7 @@ void ContactModel::solve(const std::vector<Eigen::Isometry3d>& poses) {
     node.q = q.row(r).transpose();
     node.slip = slipping[static_cast<size_t>(r)] != 0;
   }
+  gatherActiveTractions();
 
   // 4. Displacements near the bodies; slip nodes are re-anchored where they are.
   refreshDisplacementCache(poses);
@@ -235,14 +234,31 @@ void ContactModel::solve(const std::vector<Eigen::Isometry3d>& poses) {
   }
 }
 
-Eigen::Vector3d ContactModel::displacementFromActive(int node) const {
-  Eigen::Vector3d u = Eigen::Vector3d::Zero();
-  for (int j : active_) {
-    const auto& c = nodes_[static_cast<size_t>(j)];
-    const double k = kernel(node, j);
-    u += k * Eigen::Vector3d(kTangentialComplianceRatio * c.q.x(), kTangentialComplianceRatio * c.q.y(), -c.p);
+void ContactModel::gatherActiveTractions() {
+  const size_t n = active_.size();
+  active_offset_.resize(n);
+  active_wx_.resize(n);
+  active_wy_.resize(n);
+  active_wz_.resize(n);
+  for (size_t r = 0; r < n; ++r) {
+    const auto& c = nodes_[static_cast<size_t>(active_[r])];
+    active_offset_[r] = kernel_offset_[static_cast<size_t>(active_[r])];
+    active_wx_[r] = kTangentialComplianceRatio * c.q.x();
+    active_wy_[r] = kTangentialComplianceRatio * c.q.y();
+    active_wz_[r] = -c.p;
   }
-  return u;
+}
+
+Eigen::Vector3d ContactModel::displacementFromActive(int node) const {
+  const double* table = kernel_table_.data() + kernel_base_[static_cast<size_t>(node)];
+  double ux = 0, uy = 0, uz = 0;
+  for (size_t r = 0; r < active_offset_.size(); ++r) {
+    const double k = table[-active_offset_[r]];
+    ux += k * active_wx_[r];
+    uy += k * active_wy_[r];
+    uz += k * active_wz_[r];
+  }
+  return {ux, uy, uz};
 }
 
 void ContactModel::refreshDisplacementCache(const std::vector<Eigen::Isometry3d>& poses) {
@@ -257,15 +273,19 @@ void ContactModel::refreshDisplacementCache(const std::vector<Eigen::Isometry3d>
       near = z && *z - rest.z() < kCandidateGapMm;
     }
     u_cache_[static_cast<size_t>(i)] = near && !active_.empty() ? displacementFromActive(i) : Eigen::Vector3d::Zero();
+    u_cached_[static_cast<size_t>(i)] = near ? 1 : 0;
   }
 }
 
-Eigen::Vector3d ContactModel::displacement(int node) const { return displacementFromActive(node); }
+Eigen::Vector3d ContactModel::displacement(int node) const {
+  if (u_cached_[static_cast<size_t>(node)]) return u_cache_[static_cast<size_t>(node)];
+  return displacementFromActive(node);
+}
 
 std::vector<Eigen::Vector3d> ContactModel::allDisplacements() const {
   std::vector<Eigen::Vector3d> u(static_cast<size_t>(lattice_.nodeCount()), Eigen::Vector3d::Zero());
   if (active_.empty()) return u;
-  for (int i = 0; i < lattice_.nodeCount(); ++i) u[static_cast<size_t>(i)] = displacementFromActive(i);
+  for (int i = 0; i < lattice_.nodeCount(); ++i) u[static_cast<size_t>(i)] = displacement(i);
   return u;
 }
 

@@ -29,6 +29,7 @@
 // advance() sub-steps so no indenter point moves more than max_substep_mm.
 #pragma once
 
+#include <Eigen/Cholesky>
 #include <Eigen/Geometry>
 #include <vector>
 
@@ -66,6 +67,7 @@ class ContactModel {
   ContactStepStats advance(const std::vector<Eigen::Isometry3d>& poses);
 
   // Displacement of a node's surface (and marker layer) point, P frame, mm.
+  // Nodes near the indenters come from the cache the last step filled.
   Eigen::Vector3d displacement(int node) const;
   // Displacements of every lattice node (for rendering), row-major like the lattice.
   std::vector<Eigen::Vector3d> allDisplacements() const;
@@ -78,6 +80,15 @@ class ContactModel {
  private:
   void solve(const std::vector<Eigen::Isometry3d>& poses);
   double kernel(int i, int j) const;
+  // Cholesky factor of K_SS for a node set S. Two are kept across steps, the
+  // normal contact set and the stick set, and reused while S stays the same
+  // (a held or slowly moving contact keeps its sets for many steps).
+  struct CachedFactor {
+    std::vector<int> set;
+    Eigen::LLT<Eigen::MatrixXd> llt;
+  };
+  const Eigen::LLT<Eigen::MatrixXd>& factorFor(const std::vector<int>& set, CachedFactor& slot);
+  void gatherActiveTractions();
   Eigen::Vector3d displacementFromActive(int node) const;
   void refreshDisplacementCache(const std::vector<Eigen::Isometry3d>& poses);
 
@@ -85,10 +96,18 @@ class ContactModel {
   std::vector<IndenterGeometry> indenters_;
   double max_substep_mm_;
   std::vector<double> kernel_table_;  // by lattice offset (da, db)
-  std::vector<int> node_a_, node_b_;  // lattice column and row of each node (no division per lookup)
+  // kernel(i, j) = kernel_table_[kernel_base_[i] - kernel_offset_[j]]
+  std::vector<int> kernel_base_, kernel_offset_;
   std::vector<NodeContact> nodes_;
   std::vector<int> active_;
   std::vector<Eigen::Vector3d> u_cache_;  // displacement of nodes near the indenters
+  std::vector<char> u_cached_;            // which nodes u_cache_ holds
+  // Workspace kept across steps (no allocation while the contact size holds).
+  Eigen::MatrixXd k_work_;
+  CachedFactor normal_factor_, stick_factor_;
+  // Active nodes' kernel offsets and weighted tractions (c_t q_x, c_t q_y, -p), for displacement sums.
+  std::vector<int> active_offset_;
+  std::vector<double> active_wx_, active_wy_, active_wz_;
   std::vector<Eigen::Isometry3d> poses_;
 };
 
