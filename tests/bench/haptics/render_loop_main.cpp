@@ -9,22 +9,16 @@
 // from the table (vibration_table.hpp, 15-deg grid, identified at start) and
 // filter the 2.2 AC samples (2200 Hz) of this tick. The worker renders with
 // n = 8 on the 166,375-row 3-deg dataset.
-// A tick misses its deadline when its work ends after D_{k+1}; when the thread
-// wakes after D_{k+1} the skipped ticks count as missed and the loop resumes at
-// the current period (no burst of catch-up ticks).
+// The loop is haptics::PeriodicLoop (periodic_loop.hpp): ticks at absolute
+// deadlines 1 ms apart, misses counted as it defines them, with the best
+// scheduling policy the process may use (SCHED_FIFO, else nice -20, else
+// normal) unless `normal` is given.
 // The scheduler alone: before the loop, a null loop (same sleeps, no work) for
 // `null_seconds` measures the wake-up latency (wake - D_k) and how often it
 // exceeds the 1 ms period, so its share of the misses can be told apart.
-// The loop thread's timer slack is set to 1 ns (PR_SET_TIMERSLACK).
-// usage: haptic_render_loop [seconds=60] [out.csv] [null_seconds=30] [rt]
-//   rt: SCHED_FIFO priority 80 and mlockall for the loop thread (the worker
-//   keeps the normal policy). out.csv rows `what,value`.
-#include <pthread.h>
-#include <sched.h>
-#include <sys/mman.h>
-#include <sys/prctl.h>
-#include <time.h>
-
+// usage: haptic_render_loop [seconds=60] [out.csv] [null_seconds=30] [best|normal]
+//   best (default) also locks memory (mlockall). The worker keeps the normal
+//   policy. out.csv rows `what,value`.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -34,6 +28,7 @@
 #include "haptics/biotac_like_sensor.hpp"
 #include "haptics/command_ramp.hpp"
 #include "haptics/display_grid.hpp"
+#include "haptics/periodic_loop.hpp"
 #include "haptics/remote_interactions.hpp"
 #include "haptics/render_worker.hpp"
 #include "haptics/vibration_channel.hpp"
@@ -43,59 +38,10 @@ using namespace onetip::haptics;
 
 namespace {
 
-constexpr long kPeriodNs = 1000000;
-
-long long nowNs() {
-  timespec t{};
-  clock_gettime(CLOCK_MONOTONIC, &t);
-  return static_cast<long long>(t.tv_sec) * 1000000000LL + t.tv_nsec;
-}
-
-void sleepUntil(long long ns) {
-  const timespec t{static_cast<time_t>(ns / 1000000000LL), static_cast<long>(ns % 1000000000LL)};
-  while (clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &t, nullptr) != 0) {
-  }
-}
-
 double percentile(std::vector<double> v, double p) {
   if (v.empty()) return 0.0;
   std::sort(v.begin(), v.end());
   return v[std::min(v.size() - 1, static_cast<size_t>(p * static_cast<double>(v.size())))];
-}
-
-struct LoopStats {
-  long deadlines = 0, missed = 0;
-  std::vector<double> wake_latency_us, work_us;
-};
-
-// Runs `ticks` deadlines 1 ms apart; tick(k) is the work of tick k.
-template <typename Tick>
-LoopStats runLoop(long ticks, Tick&& tick) {
-  LoopStats s;
-  s.wake_latency_us.reserve(static_cast<size_t>(ticks));
-  s.work_us.reserve(static_cast<size_t>(ticks));
-  const long long start = nowNs() + 2 * kPeriodNs;
-  for (long k = 0; k < ticks;) {
-    const long long deadline = start + k * kPeriodNs;
-    sleepUntil(deadline);
-    const long long wake = nowNs();
-    s.wake_latency_us.push_back(static_cast<double>(wake - deadline) * 1e-3);
-    const long late_periods = static_cast<long>((wake - deadline) / kPeriodNs);
-    if (late_periods > 0) {  // woke after D_{k+1}: those deadlines passed unserved
-      const long skipped = std::min(late_periods, ticks - k);
-      s.missed += skipped;
-      s.deadlines += skipped;
-      k += skipped;
-      if (k >= ticks) break;
-    }
-    tick(k);
-    const long long end = nowNs();
-    s.work_us.push_back(static_cast<double>(end - wake) * 1e-3);
-    ++s.deadlines;
-    if (end > start + (k + 1) * kPeriodNs) ++s.missed;
-    ++k;
-  }
-  return s;
 }
 
 }  // namespace
@@ -103,7 +49,7 @@ LoopStats runLoop(long ticks, Tick&& tick) {
 int main(int argc, char** argv) {
   const double seconds = argc > 1 ? std::stod(argv[1]) : 60.0;
   const double null_seconds = argc > 3 ? std::stod(argv[3]) : 30.0;
-  const bool realtime = argc > 4 && std::string(argv[4]) == "rt";
+  const bool best_policy = !(argc > 4 && std::string(argv[4]) == "normal");
 
   const PlatformKinematics device;
   const TactileDataset dataset = simulateDataset(device, BiotacLikeSensor(), 3.0);
@@ -116,17 +62,14 @@ int main(int argc, char** argv) {
   for (RemoteInteraction i : kRemoteInteractions)
     for (const ContactPlane& p : remoteInteraction(i)) sensed.push_back(sensor.sense(p));
 
-  RenderWorker worker(renderer, 8, &table);  // created first: keeps the normal policy
-  prctl(PR_SET_TIMERSLACK, 1UL);  // the loop thread's sleeps end on time (default slack: 50 us)
-  bool rt_ok = false;
-  if (realtime) {
-    sched_param param{};
-    param.sched_priority = 80;
-    rt_ok = pthread_setschedparam(pthread_self(), SCHED_FIFO, &param) == 0 && mlockall(MCL_CURRENT | MCL_FUTURE) == 0;
-    if (!rt_ok) std::fprintf(stderr, "SCHED_FIFO / mlockall refused; running with the normal policy\n");
-  }
+  RenderWorker worker(renderer, 8, &table);  // its own thread keeps the normal policy
+  PeriodicLoopOptions loop_options;
+  loop_options.priority = best_policy ? LoopPriority::best_available : LoopPriority::normal;
+  loop_options.lock_memory = best_policy;
+  loop_options.record_timings = true;
+  PeriodicLoop periodic(loop_options);
 
-  const LoopStats idle = runLoop(std::lround(null_seconds * 1000.0), [](long) {});
+  const PeriodicLoopResult idle = periodic.run(std::lround(null_seconds * 1000.0), [](long) {});
 
   const std::array<double, 3> rest = {kServoMinDeg, kServoMinDeg, kServoMinDeg};
   CommandRamp ramp(rest, 10);
@@ -135,7 +78,7 @@ int main(int argc, char** argv) {
   query_us.reserve(static_cast<size_t>(seconds * 100.0) + 16);
   double ac_phase = 0.0, ac_clock = 0.0, sink = 0.0;
   RenderedCommand latest;
-  const LoopStats loop = runLoop(std::lround(seconds * 1000.0), [&](long k) {
+  const PeriodicLoopResult loop = periodic.run(std::lround(seconds * 1000.0), [&](long k) {
     if (k % 10 == 0) worker.submit(sensed[static_cast<size_t>(k / 10) % sensed.size()].data());
     if (worker.latest(latest)) {
       ramp.target(latest.command);
@@ -149,9 +92,8 @@ int main(int argc, char** argv) {
     }
   });
 
-  const double pct = 100.0 * static_cast<double>(loop.missed) / static_cast<double>(loop.deadlines);
-  const double idle_pct = 100.0 * static_cast<double>(idle.missed) / static_cast<double>(std::max(1L, idle.deadlines));
-  std::printf("policy %s\n", rt_ok ? "SCHED_FIFO 80" : "normal");
+  const double pct = loop.missedPercent(), idle_pct = idle.missedPercent();
+  std::printf("policy %s\n", toString(loop.policy).c_str());
   std::printf("null loop %.0f s: wake latency p50 %.1f us p99 %.1f us p99.9 %.1f us max %.1f us; missed %ld/%ld (%.3f%%)\n",
               null_seconds, percentile(idle.wake_latency_us, 0.5), percentile(idle.wake_latency_us, 0.99),
               percentile(idle.wake_latency_us, 0.999), percentile(idle.wake_latency_us, 1.0), idle.missed,
@@ -167,7 +109,7 @@ int main(int argc, char** argv) {
   if (argc > 2) {
     CsvWriter out(argv[2], {"what", "value"});
     auto row = [&](const std::string& what, double v) { out.row({what, formatNumber(v, 3)}); };
-    row("realtime_policy", rt_ok ? 1 : 0);
+    row("realtime_policy", loop.policy == ObtainedPolicy::realtime_fifo ? 1 : 0);
     row("deadlines", static_cast<double>(loop.deadlines));
     row("missed", static_cast<double>(loop.missed));
     row("missed_percent", pct);
