@@ -23,20 +23,12 @@ struct PointRows {
   }
 };
 
-// nanoflann metric: the SDK's squaredDistance (neighbor.hpp).
+// nanoflann's metric type: it fixes the element and distance types. nanoflann
+// only builds the tree; KdTreeIndex::search walks BoxedNodes.
 struct StandardisedL2 {
   using ElementType = float;
   using DistanceType = double;
-  const PointRows& rows;
-  explicit StandardisedL2(const PointRows& r) : rows(r) {}
-  DistanceType evalMetric(const float* a, std::uint32_t b, size_t size) const {
-    return squaredDistance(a, rows.row(b), static_cast<int>(size));
-  }
-  template <typename U, typename V>
-  DistanceType accum_dist(U a, V b, size_t) const {
-    const double d = static_cast<double>(a) - static_cast<double>(b);
-    return d * d;
-  }
+  explicit StandardisedL2(const PointRows&) {}
 };
 
 // Keeps the k best rows by (distance, id) in a sorted array. The tree holds
@@ -53,10 +45,9 @@ class TieAwareResultSet {
     const double w = slots_[capacity_ - 1].distance_sq;
     return w * (1.0 + 1e-5) + std::numeric_limits<double>::min();
   }
-  bool addPoint(double dist, std::uint32_t vector) {
+  void addPoint(double dist, std::uint32_t vector) {
     for (std::uint32_t g = group_start_[vector]; g < group_start_[vector + 1]; ++g)
       if (!addRow(dist, group_rows_[g])) break;
-    return true;
   }
 
  private:
@@ -81,6 +72,81 @@ class TieAwareResultSet {
 
 using Tree = nanoflann::KDTreeSingleIndexAdaptor<StandardisedL2, PointRows, -1, std::uint32_t>;
 
+// nanoflann's tree flattened into an array, each node with the bounding box of
+// the vectors below it in every dimension (nanoflann keeps only the split
+// dimension's bounds). On data near a low-dimensional manifold a cell's
+// vectors fill a small part of the rectangle its splits define, so the full
+// box gives a much tighter lower bound.
+struct BoxedNodes {
+  struct Node {
+    std::int32_t child[2] = {-1, -1};  // -1: leaf
+    std::uint32_t begin = 0, end = 0;  // vectors [begin, end) in leaf order
+  };
+  int dims = 0;
+  std::vector<Node> nodes;
+  std::vector<float> bounds;  // per node: low[dims] then high[dims]
+  float* lowOf(std::int32_t id) { return bounds.data() + static_cast<size_t>(id) * 2 * static_cast<size_t>(dims); }
+  float* highOf(std::int32_t id) { return lowOf(id) + dims; }
+  const float* lowOf(std::int32_t id) const {
+    return bounds.data() + static_cast<size_t>(id) * 2 * static_cast<size_t>(dims);
+  }
+
+  std::int32_t add(const Tree::Node* n, const PointRows& rows) {
+    const auto id = static_cast<std::int32_t>(nodes.size());
+    const auto d = static_cast<size_t>(dims);
+    nodes.emplace_back();
+    bounds.resize(bounds.size() + 2 * d);
+    float* lo = lowOf(id);
+    float* hi = highOf(id);
+    if (n->child1 == nullptr && n->child2 == nullptr) {
+      nodes[static_cast<size_t>(id)].begin = static_cast<std::uint32_t>(n->node_type.lr.left);
+      nodes[static_cast<size_t>(id)].end = static_cast<std::uint32_t>(n->node_type.lr.right);
+      std::fill(lo, lo + d, std::numeric_limits<float>::infinity());
+      std::fill(hi, hi + d, -std::numeric_limits<float>::infinity());
+      for (size_t v = n->node_type.lr.left; v < n->node_type.lr.right; ++v)
+        for (size_t i = 0; i < d; ++i) {
+          lo[i] = std::min(lo[i], rows.row(v)[i]);
+          hi[i] = std::max(hi[i], rows.row(v)[i]);
+        }
+      return id;
+    }
+    const std::int32_t a = add(n->child1, rows), b = add(n->child2, rows);
+    lo = lowOf(id);  // the array may have moved
+    hi = highOf(id);
+    for (size_t i = 0; i < d; ++i) {
+      lo[i] = std::min(lowOf(a)[i], lowOf(b)[i]);
+      hi[i] = std::max(highOf(a)[i], highOf(b)[i]);
+    }
+    auto& node = nodes[static_cast<size_t>(id)];
+    node.child[0] = a;
+    node.child[1] = b;
+    return id;
+  }
+
+  // Squared distance from q to node's box (0 inside), in float: four lanes
+  // at a time, then the remaining dimensions.
+  double boxDistance(const float* q, std::int32_t node) const {
+    using detail::Float4;
+    using detail::load4;
+    const float* lo = lowOf(node);
+    const float* hi = lo + dims;
+    const Float4 zero = {0, 0, 0, 0};
+    Float4 acc = zero;
+    int i = 0;
+    for (; i + 4 <= dims; i += 4) {
+      const Float4 x = load4(q + i), below = load4(lo + i) - x, above = x - load4(hi + i);
+      const Float4 e = (below > zero ? below : zero) + (above > zero ? above : zero);
+      acc += e * e;
+    }
+    float sum = (acc[0] + acc[1]) + (acc[2] + acc[3]);
+    for (; i < dims; ++i) {
+      const float e = std::max(lo[i] - q[i], 0.0f) + std::max(q[i] - hi[i], 0.0f);
+      sum += e * e;
+    }
+    return sum;
+  }
+};
+
 }  // namespace
 
 void KdTreeOptions::validate() const {
@@ -93,6 +159,7 @@ struct KdTreeIndex::Impl {
   std::vector<std::uint32_t> group_start;  // rows of distinct vector v:
   std::vector<std::uint32_t> group_rows;   //   group_rows[group_start[v] .. group_start[v+1])
   std::unique_ptr<Tree> tree;
+  BoxedNodes boxes;
 };
 
 namespace {
@@ -143,6 +210,10 @@ KdTreeIndex::KdTreeIndex(std::vector<float> points, int dims, const KdTreeOption
   impl_->tree = std::make_unique<Tree>(dims, impl_->distinct,
                                        nanoflann::KDTreeSingleIndexAdaptorParams(static_cast<size_t>(options.leaf_size)));
   storeInTreeOrder(*impl_);
+  impl_->boxes.dims = dims;
+  impl_->boxes.add(impl_->tree->root_node, impl_->distinct);
+  impl_->boxes.bounds.shrink_to_fit();
+  impl_->boxes.nodes.shrink_to_fit();
 }
 
 // Rewrites the distinct vectors (and their row groups) in the order the tree's
@@ -175,7 +246,25 @@ void KdTreeIndex::search(const float* query, int k, std::vector<Neighbor>& out) 
   const size_t want = std::min(static_cast<size_t>(std::max(k, 1)), size());
   out.resize(want);
   TieAwareResultSet result(out.data(), want, impl_->group_start, impl_->group_rows);
-  impl_->tree->findNeighbors(result, query, nanoflann::SearchParams());
+  const BoxedNodes& boxes = impl_->boxes;
+  const PointRows& rows = impl_->distinct;
+  // Depth first, nearer child first; a child is entered only if its box is
+  // within the current k-th distance (re-read after every accepted vector).
+  auto visit = [&](auto&& self, std::int32_t id) -> void {
+    const auto& node = boxes.nodes[static_cast<size_t>(id)];
+    if (node.child[0] < 0) {
+      for (std::uint32_t v = node.begin; v < node.end; ++v) {
+        const double d = squaredDistance(query, rows.row(v), rows.dims);
+        if (d < result.worstDist()) result.addPoint(d, v);
+      }
+      return;
+    }
+    const double d0 = boxes.boxDistance(query, node.child[0]), d1 = boxes.boxDistance(query, node.child[1]);
+    const int near = d0 <= d1 ? 0 : 1;
+    if (std::min(d0, d1) <= result.worstDist()) self(self, node.child[near]);
+    if (std::max(d0, d1) <= result.worstDist()) self(self, node.child[1 - near]);
+  };
+  visit(visit, 0);
 }
 
 size_t KdTreeIndex::size() const noexcept { return impl_->points.size() / static_cast<size_t>(dims()); }
@@ -188,7 +277,8 @@ const float* KdTreeIndex::point(size_t row) const noexcept {
 size_t KdTreeIndex::memoryBytes() const {
   return (impl_->points.size() + impl_->distinct.data.size()) * sizeof(float) +
          (impl_->group_start.size() + impl_->group_rows.size()) * sizeof(std::uint32_t) +
-         impl_->tree->usedMemory(*impl_->tree);
+         impl_->tree->usedMemory(*impl_->tree) + impl_->boxes.bounds.size() * sizeof(float) +
+         impl_->boxes.nodes.size() * sizeof(BoxedNodes::Node);
 }
 
 }  // namespace onetip::haptics
