@@ -1,5 +1,6 @@
 // `onetip view`: the viewer (viewer/viewer_session.hpp) — live in a window, or
-// headless with --screenshot (the last frame drawn) and/or --record.
+// headless with --screenshot (the last frame drawn) and/or --record; --windowed
+// keeps the window with them, --pose-out logs the 6-D input per frame.
 #include <cstdio>
 #include <string>
 
@@ -26,13 +27,15 @@ int runView(const Args& args) {
   o.screenshot = args.optional("screenshot").value_or("");
   o.record = args.optional("record").value_or("");
   o.frames = args.getInt("frames", 0);
+  o.pose_out = args.optional("pose-out").value_or("");
   o.headless = args.has("headless");
+  o.windowed = args.has("windowed");
   if (auto s = args.optional("size")) o.window = parseSize(*s);
   const viewer::ViewerReport r = viewer::runViewer(o);
   std::printf("drew %d frames %s on %s: %.1f frames/s overall; median per frame: source %.2f ms, pipeline %.2f ms, "
-              "draw %.2f ms, read-back %.2f ms\n",
+              "draw %.2f ms, read-back %.2f ms, present %.2f ms\n",
               r.drawn, r.headless ? "headless" : "in a window", r.gl.c_str(), r.loop_fps, r.median_source_ms,
-              r.median_process_ms, r.median_draw_ms, r.median_readback_ms);
+              r.median_process_ms, r.median_draw_ms, r.median_readback_ms, r.median_present_ms);
   if (!o.screenshot.empty()) std::printf("screenshot: %s\n", o.screenshot.c_str());
   return 0;
 }
@@ -45,11 +48,15 @@ const CommandRegistrar reg{{
     {{"input", "frames: sim:SCENARIO.yaml, sim:virtual, a folder of PNGs, a video file or v4l2:/dev/videoN", false, true},
      {"calib", "calibration file (default for sim: inputs: the simulator's)", false, false},
      {"pattern", "marker pattern file (default for sim: inputs: the simulator's)", false, false},
-     {"screenshot", "PNG of the last frame drawn; runs headless", false, false},
+     {"screenshot", "PNG of the last frame drawn; runs headless unless --windowed", false, false},
      {"frames", "stop after this many frames (default: when the input ends)", false, false},
      {"record", "record what is shown: OUT.mp4 / OUT.avi, or a folder for a PNG sequence", false, false},
      {"size", "window size WIDTHxHEIGHT (default 1280x720)", false, false},
-     {"headless", "draw offscreen even when a display is available", true, false}},
+     {"pose-out", "CSV of the 6-D input per drawn frame: frame,contact,state,dx,dy,dz,yaw,pitch,roll, then for sim "
+                  "inputs the ground truth gt_contact,gt_dx..gt_roll, for sim:virtual the finger's pose finger_x..finger_roll",
+      false, false},
+     {"headless", "draw offscreen even when a display is available", true, false},
+     {"windowed", "draw in a window even with --screenshot (needs a display)", true, false}},
     runView}};
 
 }  // namespace

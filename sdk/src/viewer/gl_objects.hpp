@@ -74,6 +74,10 @@ class GlTexture {
   // Throws std::invalid_argument for an empty image or a type other than
   // CV_8UC1 / CV_8UC4.
   void upload(const cv::Mat& image);
+  // Updates only `regions` (pixels, inside the image) from `image`, or all of
+  // it when its size or type differs from the texture's; texels outside the
+  // regions keep what they held.
+  void uploadRegions(const cv::Mat& image, const std::vector<cv::Rect>& regions);
   void bind(int unit) const;
   bool empty() const noexcept { return size_.area() == 0; }
 

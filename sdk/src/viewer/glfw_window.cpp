@@ -4,6 +4,7 @@
 #include <GLFW/glfw3.h>
 
 #include <stdexcept>
+#include <string>
 
 namespace onetip::viewer {
 
@@ -17,6 +18,13 @@ struct PendingInput {
   double tilt_x = 0, tilt_y = 0;   // right button, pixels
   bool lift = false, rezero = false;
 };
+
+// GLFW's description of its last error, or "" when it has none.
+std::string lastGlfwError() {
+  const char* description = nullptr;
+  glfwGetError(&description);
+  return description ? std::string(": ") + description : std::string();
+}
 
 PendingInput& pending(GLFWwindow* w) { return *static_cast<PendingInput*>(glfwGetWindowUserPointer(w)); }
 
@@ -38,7 +46,7 @@ void onKey(GLFWwindow* w, int key, int, int action, int) {
 }  // namespace
 
 ViewerWindow::ViewerWindow(cv::Size size, const std::string& title) {
-  if (!glfwInit()) throw std::runtime_error("viewer window: GLFW cannot initialise (no display?)");
+  if (!glfwInit()) throw std::runtime_error("viewer window: GLFW cannot initialise (no display?)" + lastGlfwError());
   glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
   glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
   glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
@@ -46,8 +54,9 @@ ViewerWindow::ViewerWindow(cv::Size size, const std::string& title) {
   glfwWindowHint(GLFW_RESIZABLE, GLFW_FALSE);
   window_ = glfwCreateWindow(size.width, size.height, title.c_str(), nullptr, nullptr);
   if (!window_) {
+    const std::string why = lastGlfwError();
     glfwTerminate();
-    throw std::runtime_error("viewer window: cannot create an OpenGL 3.3 core window");
+    throw std::runtime_error("viewer window: cannot create an OpenGL 3.3 core window" + why);
   }
   glfwSetWindowUserPointer(window_, new PendingInput);
   glfwSetScrollCallback(window_, onScroll);

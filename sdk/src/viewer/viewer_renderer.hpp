@@ -2,8 +2,9 @@
 // framebuffer with OpenGL 3.3 core and the shaders in shaders/viewer_*.
 //
 // Panels (viewer/panel_layout.hpp), each in its own viewport:
-//   camera   the grey frame as a texture, letterboxed, with the corners as
-//            round points (viewer/camera_markers.hpp);
+//   camera   the grey frame as a texture, letterboxed (area-averaged down
+//            to the panel's pixels on the CPU when it is smaller), with the
+//            corners as round points (viewer/camera_markers.hpp);
 //   field    the deformation surface, lit and coloured by |u| (0 to
 //            scale_mm, blue to red), with tangential arrows, seen from above
 //            the pad at an angle (S, mm; viewer/field_geometry.hpp), and the
@@ -12,7 +13,8 @@
 //            view) with stick/slip colours;
 //   pose     the 6-D input object over the pad plane (viewer/input_object.hpp);
 //   gauges, timing and every title: the HUD overlay (viewer/hud_painter.hpp),
-//            blended over everything.
+//            blended over everything, only where it has content
+//            (viewer/overlay_regions.hpp).
 // Needs a current OpenGL 3.3 core context for its whole life.
 #pragma once
 

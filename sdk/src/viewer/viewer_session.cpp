@@ -15,6 +15,7 @@
 #include "viewer/gl_api.hpp"
 #include "viewer/glfw_window.hpp"
 #include "viewer/offscreen_target.hpp"
+#include "viewer/viewer_pose_log.hpp"
 #include "viewer/virtual_finger.hpp"
 
 namespace onetip::viewer {
@@ -35,6 +36,7 @@ constexpr const char* kVirtualInput = "sim:virtual";
 struct OpenedInput {
   std::unique_ptr<capture::FrameSource> source;
   VirtualFingerSource* finger = nullptr;  // set for sim:virtual
+  const sim::Simulator* simulator = nullptr;  // set for simulated inputs (ground truth)
   StereoCalibration calib;
   MarkerPattern pattern;
 };
@@ -46,6 +48,7 @@ OpenedInput openInput(const ViewerOptions& o) {
   if (o.input == kVirtualInput) {
     auto finger = std::make_unique<VirtualFingerSource>();
     in.finger = finger.get();
+    in.simulator = &finger->simulator();
     sim_calib = finger->simulator().calibration();
     sim_pattern = finger->simulator().pattern();
     in.source = std::move(finger);
@@ -53,6 +56,7 @@ OpenedInput openInput(const ViewerOptions& o) {
     sim::registerSimFrameSource();
     in.source = capture::openFrameSource(o.input);
     if (const auto* s = dynamic_cast<const sim::SimFrameSource*>(in.source.get())) {
+      in.simulator = &s->simulator();
       sim_calib = s->simulator().calibration();
       sim_pattern = s->simulator().pattern();
     }
@@ -96,12 +100,18 @@ bool displayAvailable() {
 void ViewerOptions::validate() const {
   if (input.empty()) throw InputError("--input: missing");
   if (frames < 0) throw InputError("--frames: must be >= 0");
+  if (windowed && headless) throw InputError("--windowed: cannot be combined with --headless");
+  if (windowed && !displayAvailable())
+    throw InputError("--windowed: no display to open a window on (DISPLAY and WAYLAND_DISPLAY are unset)");
   if (window.width < 640 || window.height < 360 || window.width > 7680 || window.height > 4320)
     throw InputError("--size: must be between 640x360 and 7680x4320");
-  const bool headless_run = headless || !screenshot.empty() || !displayAvailable();
-  if (headless_run && input == kVirtualInput && frames == 0)
+  if (runsHeadless() && input == kVirtualInput && frames == 0)
     throw InputError("--frames: needed for sim:virtual without a window (it never ends)");
   render.validate();
+}
+
+bool ViewerOptions::runsHeadless() const {
+  return headless || (!screenshot.empty() && !windowed) || !displayAvailable();
 }
 
 ViewerReport runViewer(const ViewerOptions& o, const FrameObserver& observer) {
@@ -110,7 +120,7 @@ ViewerReport runViewer(const ViewerOptions& o, const FrameObserver& observer) {
   const pipeline::FrameProcessorOptions pipeline_options;
   pipeline::FrameProcessor processor(in.calib, in.pattern, pipeline_options);
   ViewerReport report;
-  report.headless = o.headless || !o.screenshot.empty() || !displayAvailable();
+  report.headless = o.runsHeadless();
   Surface surface(o, report.headless);
   report.gl = currentGlDescription();
   ViewerRendererOptions render = o.render;
@@ -118,22 +128,26 @@ ViewerReport runViewer(const ViewerOptions& o, const FrameObserver& observer) {
   ViewerRenderer renderer(in.calib, render);
   std::unique_ptr<FrameRecorder> recorder;
   if (!o.record.empty()) recorder = std::make_unique<FrameRecorder>(o.record, 30.0);
+  std::unique_ptr<ViewerPoseLog> pose_log;
+  if (!o.pose_out.empty()) pose_log = std::make_unique<ViewerPoseLog>(o.pose_out, in.simulator != nullptr, in.finger != nullptr);
   const bool need_image = observer || recorder || !o.screenshot.empty();
 
   ViewerFrame view;
   view.source = in.source->describe();
   if (in.finger && surface.window) view.hint = virtualFingerHelp();
-  std::vector<double> source_ms, process_ms, draw_ms, readback_ms;
+  std::vector<double> source_ms, process_ms, draw_ms, readback_ms, present_ms;
   cv::Mat last;
   int consecutive_errors = 0;
   const auto loop_start = Clock::now();
-  auto previous = loop_start;
+  auto previous = loop_start;       // end of the last drawn frame (the frame rate)
+  auto last_controls = loop_start;  // when the finger's controls were last taken (their hold time)
   for (;;) {
     if (surface.window && !surface.window->isOpen()) break;
     if (o.frames > 0 && report.drawn >= o.frames) break;
     const auto t_frame = Clock::now();
     if (in.finger && surface.window) {
-      in.finger->finger().apply(surface.window->takeControls(std::chrono::duration<double>(t_frame - previous).count()));
+      in.finger->finger().apply(surface.window->takeControls(std::chrono::duration<double>(t_frame - last_controls).count()));
+      last_controls = t_frame;
       if (surface.window->takeRezero()) processor.rezero();
     }
     capture::Frame frame = in.source->next();
@@ -166,9 +180,16 @@ ViewerReport runViewer(const ViewerOptions& o, const FrameObserver& observer) {
       readback_ms.push_back(msSince(t_read));
     }
     view.rates.render_ms = msSince(t_draw);
-    if (surface.window) surface.window->present();
+    if (surface.window) {
+      const auto t_present = Clock::now();
+      surface.window->present();
+      present_ms.push_back(msSince(t_present));
+    }
     if (recorder) recorder->write(last);
     if (observer) observer(last, view);
+    if (pose_log)
+      pose_log->add(frame.index, view.result, in.simulator ? &in.simulator->current() : nullptr,
+                    in.finger ? &in.finger->finger().pose() : nullptr);
     ++report.drawn;
     source_ms.push_back(t_source);
     process_ms.push_back(view.result.times.process);
@@ -180,11 +201,13 @@ ViewerReport runViewer(const ViewerOptions& o, const FrameObserver& observer) {
   if (report.drawn == 0) throw InputError(o.input + ": no frame could be shown");
   if (!o.screenshot.empty()) writePngAtomically(o.screenshot, last);
   if (recorder) recorder->finish();
+  if (pose_log) pose_log->commit();
   report.loop_fps = wall_s > 0 ? report.drawn / wall_s : 0;
   report.median_source_ms = median(source_ms);
   report.median_process_ms = median(process_ms);
   report.median_draw_ms = median(draw_ms);
   report.median_readback_ms = median(readback_ms);
+  report.median_present_ms = median(present_ms);
   return report;
 }
 

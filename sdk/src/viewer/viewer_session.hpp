@@ -7,10 +7,12 @@
 // mouse-and-keyboard finger (viewer/virtual_finger.hpp). For simulated
 // inputs the calibration and pattern default to the simulator's own; other
 // sources need both files. The first usable frame is the rest state.
-// Output: a GLFW window, or — with a screenshot, without a display, or when
-// asked — a headless EGL context drawing into an offscreen framebuffer.
-// frames > 0 stops after that many drawn frames; the screenshot is the last
-// one. Times are milliseconds on the calling thread (steady clock).
+// Output: a GLFW window, or — with a screenshot (unless `windowed`), without
+// a display, or when asked — a headless EGL context drawing into an offscreen
+// framebuffer. frames > 0 stops after that many drawn frames; the screenshot
+// is the last one (in a window: its back buffer, read before it is shown).
+// pose_out logs the 6-D input of every drawn frame (viewer/viewer_pose_log.hpp).
+// Times are milliseconds on the calling thread (steady clock).
 #pragma once
 
 #include <functional>
@@ -27,11 +29,14 @@ struct ViewerOptions {
   std::string calib, pattern;  // required unless the input is simulated
   std::string screenshot;      // PNG of the last drawn frame (implies headless)
   std::string record;          // video (.mp4, .avi) or a folder of PNGs
+  std::string pose_out;        // CSV of the 6-D input per drawn frame (+ ground truth for sim inputs)
   int frames = 0;              // 0: until the source ends or the window closes
   cv::Size window{1280, 720};
   bool headless = false;
+  bool windowed = false;       // a window even with a screenshot or recording (needs a display)
   ViewerRendererOptions render;
   void validate() const;       // throws InputError naming the bad option
+  bool runsHeadless() const;   // offscreen rather than in a window
 };
 
 struct ViewerReport {
@@ -43,6 +48,7 @@ struct ViewerReport {
   double median_process_ms = 0;  // the pipeline
   double median_draw_ms = 0;     // scene building + GL drawing, finished (glFinish)
   double median_readback_ms = 0; // reading the image back (0 when not needed)
+  double median_present_ms = 0;  // showing the window's frame and taking its events (0 headless)
 };
 
 // Sees every drawn frame as the window shows it (BGR, top-down) with what it showed.

@@ -1,6 +1,8 @@
 // The viewer's drawing rate, headless (EGL; Mesa llvmpipe on machines without
 // a GPU): one pressed frame of demo_touch drawn again and again at 1280x720,
-// finished (glFinish), with and without reading the image back.
+// finished (glFinish), with and without reading the image back; and in a GLFW
+// window, shown (swap buffers + events) every time, when a display is set
+// (e.g. under xvfb-run; skipped otherwise).
 #include <benchmark/benchmark.h>
 
 #include <memory>
@@ -8,6 +10,7 @@
 #include "sim/simulator.hpp"
 #include "viewer/egl_core_context.hpp"
 #include "viewer/gl_api.hpp"
+#include "viewer/glfw_window.hpp"
 #include "viewer/offscreen_target.hpp"
 #include "viewer/viewer_renderer.hpp"
 #include "viewer/viewer_session.hpp"
@@ -53,8 +56,26 @@ void drawLoop(benchmark::State& state, bool read_back) {
 
 void BM_ViewerDraw(benchmark::State& state) { drawLoop(state, false); }
 void BM_ViewerDrawAndReadBack(benchmark::State& state) { drawLoop(state, true); }
+void BM_ViewerDrawInWindow(benchmark::State& state) {
+  if (!viewer::displayAvailable()) {
+    state.SkipWithError("no display (run under xvfb-run for the window's rate)");
+    return;
+  }
+  const PressedFrame& p = pressed();
+  viewer::ViewerWindow window({1280, 720}, "onetip bench_viewer");
+  viewer::ViewerRenderer renderer(p.calib);
+  for (auto _ : state) {
+    renderer.draw(p.frame, window.framebufferSize());
+    window.present();
+    glFinish();
+  }
+  state.counters["fps"] = benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+  state.SetLabel(viewer::currentGlDescription());
+}
+
 BENCHMARK(BM_ViewerDraw)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(2.0);
 BENCHMARK(BM_ViewerDrawAndReadBack)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(2.0);
+BENCHMARK(BM_ViewerDrawInWindow)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(2.0);
 
 }  // namespace
 
