@@ -1,24 +1,15 @@
 #include "pipeline/pipeline.hpp"
 
-#include <cmath>
 #include <condition_variable>
 #include <mutex>
 #include <sstream>
 #include <thread>
 
 #include "core/error.hpp"
-#include "pipeline/bounded_queue.hpp"
+#include "pipeline/capture_loop.hpp"
 
 namespace onetip::pipeline {
 namespace {
-
-enum Stage : std::size_t { kCapture, kQueue, kDetect, kTrack, kTriangulate, kContact, kPose, kProcess, kDelivery };
-const std::vector<std::string> kStageNames{"capture", "queue",   "detect",  "track",   "triangulate",
-                                           "contact", "pose",    "process", "delivery"};
-
-double msBetween(SteadyClock::time_point a, SteadyClock::time_point b) {
-  return std::chrono::duration<double, std::milli>(b - a).count();
-}
 
 void requireRange(const char* field, double value, double lo, double hi) {
   if (!(value >= lo && value <= hi)) {
@@ -27,17 +18,6 @@ void requireRange(const char* field, double value, double lo, double hi) {
     throw InputError(msg.str());
   }
 }
-
-// What the capture thread hands to the processing thread.
-struct Captured {
-  enum class Kind { frame, skipped, source_error, source_failed } kind = Kind::frame;
-  cv::Mat grey;
-  std::int64_t index = -1;
-  double timestamp_s = 0;
-  std::string message;
-  SteadyClock::time_point arrival{};
-  double capture_ms = 0;
-};
 
 }  // namespace
 
@@ -51,93 +31,6 @@ void PipelineOptions::validate() const {
   requireRange("max_consecutive_source_errors", max_consecutive_source_errors, 1, 1e6);
   requireRange("stop_timeout_ms", stop_timeout_ms, 10, 600000);
 }
-
-// Everything the capture thread touches: it may outlive the Pipeline when a
-// blocked read is abandoned at stop().
-struct Pipeline::Shared {
-  Shared(std::unique_ptr<capture::FrameSource> s, const PipelineOptions& o)
-      : source(std::move(s)), options(o), frames(static_cast<std::size_t>(o.queue_capacity)),
-        timing(kStageNames, o.timing_window) {}
-
-  std::unique_ptr<capture::FrameSource> source;
-  const PipelineOptions options;
-  BoundedQueue<Captured> frames;
-  TimingStats timing;
-  std::atomic<bool> stop{false};
-  std::mutex mutex;               // guards capture_exited; the pacing sleep waits on `wake`
-  std::condition_variable wake;
-  bool capture_exited = false;
-  std::atomic<std::int64_t> captured{0}, skipped{0}, source_errors{0};
-
-  void requestStop() {
-    {
-      std::lock_guard lock(mutex);
-      stop = true;
-    }
-    wake.notify_all();
-    frames.close();
-  }
-
-  // Sleeps until `when` or a stop request; false when stopping.
-  bool sleepUntil(SteadyClock::time_point when) {
-    std::unique_lock lock(mutex);
-    return !wake.wait_until(lock, when, [&] { return stop.load(); });
-  }
-
-  void captureLoop() {
-    bool paced = false;
-    SteadyClock::time_point pace_start{};
-    double first_timestamp = 0;
-    int consecutive_errors = 0;
-    while (!stop) {
-      const auto t0 = SteadyClock::now();
-      capture::Frame f = source->next();
-      const auto t1 = SteadyClock::now();
-      if (stop || f.status == capture::FrameStatus::end) break;
-      Captured c;
-      c.index = f.index;
-      c.timestamp_s = f.timestamp_s;
-      c.message = std::move(f.message);
-      c.capture_ms = msBetween(t0, t1);
-      if (f.status == capture::FrameStatus::error) {
-        ++source_errors;
-        c.kind = ++consecutive_errors >= options.max_consecutive_source_errors ? Captured::Kind::source_failed
-                                                                                 : Captured::Kind::source_error;
-      } else {
-        consecutive_errors = 0;
-        if (f.status == capture::FrameStatus::skipped) {
-          ++skipped;
-          c.kind = Captured::Kind::skipped;
-        } else {
-          ++captured;
-          c.grey = std::move(f.grey);
-          timing.add(kCapture, c.capture_ms);
-          if (options.playback_rate > 0) {
-            if (!paced) {
-              paced = true;
-              pace_start = t1;
-              first_timestamp = f.timestamp_s;
-            }
-            const double offset_s = (f.timestamp_s - first_timestamp) / options.playback_rate;
-            if (std::isfinite(offset_s) && offset_s > 0 &&
-                !sleepUntil(pace_start + std::chrono::duration_cast<SteadyClock::duration>(
-                                             std::chrono::duration<double>(offset_s))))
-              break;
-          }
-        }
-      }
-      c.arrival = SteadyClock::now();
-      const bool failed = c.kind == Captured::Kind::source_failed;
-      // Only frames go stale: reports of skipped frames and source errors wait for room.
-      const bool wait = options.lossless || c.kind != Captured::Kind::frame;
-      if (frames.push(std::move(c), wait) == BoundedQueue<Captured>::PushResult::closed || failed) break;
-    }
-    frames.close();  // end of stream: the processing thread drains and finishes
-    std::lock_guard lock(mutex);
-    capture_exited = true;
-    wake.notify_all();
-  }
-};
 
 struct Pipeline::Processing {
   Processing(const StereoCalibration& calib, const MarkerPattern& pattern, const PipelineOptions& o)
@@ -275,8 +168,12 @@ struct Pipeline::Processing {
     for (input::InputEvent& e : r.pose.events) out.push_back({std::move(e), c.index, c.arrival});
     r.pose.events.clear();
     const StageTimes& st = r.times;
-    for (const auto& [stage, ms] : {std::pair{kQueue, pf.queue_ms}, {kDetect, st.detect}, {kTrack, st.track},
-                                    {kTriangulate, st.triangulate}, {kContact, st.contact}, {kPose, st.pose},
+    for (const auto& [stage, ms] : {std::pair{kQueue, pf.queue_ms},
+                                    {kDetect, st.detect},
+                                    {kTrack, st.track},
+                                    {kTriangulate, st.triangulate},
+                                    {kContact, st.contact},
+                                    {kPose, st.pose},
                                     {kProcess, st.process}})
       shared.timing.add(stage, ms);
     deliver(out, &pf, shared);
