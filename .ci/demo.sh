@@ -5,7 +5,7 @@
 # out/demo/contact_sheet.png.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash scripts/install-deps.sh
+bash .ci/install-deps.sh
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build build -j"$(nproc)" --target onetip_cli
 mkdir -p out

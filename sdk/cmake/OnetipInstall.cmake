@@ -18,5 +18,5 @@ file(WRITE ${PROJECT_BINARY_DIR}/onetipConfig.cmake
 install(FILES ${PROJECT_BINARY_DIR}/onetipConfig.cmake ${PROJECT_BINARY_DIR}/onetipConfigVersion.cmake
   DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/onetip)
 
-configure_file(${PROJECT_SOURCE_DIR}/cmake/onetip.pc.in ${PROJECT_BINARY_DIR}/onetip.pc @ONLY)
+configure_file(${PROJECT_SOURCE_DIR}/sdk/cmake/onetip.pc.in ${PROJECT_BINARY_DIR}/onetip.pc @ONLY)
 install(FILES ${PROJECT_BINARY_DIR}/onetip.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig)
