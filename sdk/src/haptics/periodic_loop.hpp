@@ -33,7 +33,8 @@ struct PeriodicLoopOptions {
   LoopPriority priority = LoopPriority::best_available;
   int realtime_priority = 80;                    // SCHED_FIFO priority, 1 .. 99
   bool lock_memory = false;                      // mlockall(MCL_CURRENT | MCL_FUTURE)
-  bool record_timings = false;                   // keep every tick's wake latency and work time
+  bool record_timings = false;                   // keep every tick's wake latency and work time (grows without
+                                                 // bound when run() has no tick limit)
   void validate() const;                         // throws InputError naming the bad field
 };
 
