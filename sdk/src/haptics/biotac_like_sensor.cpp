@@ -11,8 +11,9 @@ namespace onetip::haptics {
 namespace {
 const FingertipShape kShape;  // the default: the BioTac-like ellipsoid
 constexpr double kKernelSigmaMm = 2.5;
-constexpr double kElectrodeGain = 500.0;  // counts per mm of local indentation
-constexpr double kPressureGain = 8.0;     // counts per mm^3 of indented volume
+constexpr double kFluidLayerMm = 2.0;       // h0, conductive fluid between skin and core at rest
+constexpr double kMinLayerFraction = 1e-3;  // asperities keep h >= h0 / 1000 (impedance range ~1000x)
+constexpr double kPressureGain = 8.0;       // counts per mm^3 of indented volume
 constexpr double kPressureBase = 500.0;
 
 Eigen::Vector3d surfacePoint(double polar, double azimuth) {
@@ -41,6 +42,7 @@ BiotacLikeSensor::BiotacLikeSensor(const BiotacLikeOptions& options) : options_(
       const Eigen::Vector3d dq_dp = (surfacePoint(t, p + 1e-6) - surfacePoint(t, p - 1e-6)) / 2e-6;
       samples_.push_back(surfacePoint(t, p));
       area_.push_back(dq_dt.cross(dq_dp).norm() * dt * dp);
+      skin_area_ += area_.back();
     }
   }
   electrodes_.push_back(surfacePoint(0.0, 0.0));
@@ -65,13 +67,18 @@ void BiotacLikeSensor::sense(const ContactPlane& plate, double* out) const {
     volume += area_[k] * d;
   }
   const Eigen::VectorXd electrode = kernel_ * indent;
+  const double inflation = volume / skin_area_;  // the displaced fluid lifts the skin evenly
   std::normal_distribution<double> noise(0.0, 1.0);
   auto counts = [&](double v) {
     if (options_.noise_counts > 0.0) v += options_.noise_counts * noise(rng_);
     return std::clamp(std::round(v), 0.0, 4095.0);
   };
-  for (int e = 0; e < kElectrodes; ++e)
-    out[e] = counts(1800.0 + 40.0 * (e % 5) + kElectrodeGain * electrode(e));
+  for (int e = 0; e < kElectrodes; ++e) {
+    const double layer = std::max(kFluidLayerMm * kMinLayerFraction, kFluidLayerMm - electrode(e) + inflation);
+    const double impedance = kFluidLayerMm / layer;  // Z / Z0
+    const double reference = 1.0 + 0.05 * (e % 5);   // R_j / Z0
+    out[e] = counts(4095.0 * impedance / (impedance + reference));
+  }
   out[kElectrodes] = counts(kPressureBase + kPressureGain * volume);
 }
 

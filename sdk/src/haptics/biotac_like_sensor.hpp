@@ -10,10 +10,19 @@
 // Electrode j sits at the surface point of direction
 //   u_j = (sin t_j cos p_j, sin t_j sin p_j, -cos t_j): one at the centre of the
 //   pad, six at t = 35 deg, twelve at t = 68 deg (every 60 / 30 deg);
-// its impedance rises with the skin compressed around it:
-//   e_j = base_j + g_e * sum_k A_k K(|q_k - p_j|) delta_k / sum_k A_k K(...)
-//         with a Gaussian kernel K(r) = exp(-r^2 / (2 * 2.5^2)), g_e = 500 counts/mm;
-//   base_j = 1800 + 40 * (j mod 5) counts (electrodes differ at rest).
+// it measures the impedance of the conductive fluid layer between the skin
+// and the core above it. A thin layer of thickness h conducts like a sheet,
+// so Z ~ 1 / h (the BioTac's nonlinear, steepening response):
+//   delta_j = sum_k A_k K(|q_k - p_j|) delta_k / sum_k A_k K(...)   (local indentation,
+//             Gaussian kernel K(r) = exp(-r^2 / (2 * 2.5^2)))
+//   h_j     = max(h0 / 1000, h0 - delta_j + V / A_skin)   h0 = 2 mm of fluid at rest; the fluid
+//             is incompressible, so the volume V pressed in lifts the skin evenly over its
+//             sampled area A_skin (electrodes away from the contact read less); skin
+//             asperities keep the layer from closing (an impedance range of ~1000x)
+//   Z_j/Z0  = h0 / h_j
+//   e_j     = 4095 * Z_j / (Z_j + R_j)   (a voltage divider with R_j = Z0 (1 + 0.05 (j mod 5)):
+//             electrodes differ at rest, 1706-2048 counts, and saturate towards 4095).
+// Small-signal gain at rest: 4095 / (4 h0) = 512 counts/mm, rising ~2.6x at 1.5 mm.
 // The DC pressure channel follows the indented volume:
 //   p_dc = 500 + g_p * sum_k A_k delta_k,  g_p = 8 counts/mm^3.
 // Counts are rounded to integers and clamped to [0, 4095] (12 bits), plus
@@ -36,9 +45,9 @@ namespace onetip::haptics {
 struct BiotacLikeOptions {
   double noise_counts = 0.0;  // Gaussian sensor noise, counts (>= 0)
   std::uint64_t seed = 1;
-  int polar_samples = 12;     // surface sampling: rings from the pad to the equator
+  int polar_samples = 12;  // surface sampling: rings from the pad to the equator
   int azimuth_samples = 36;
-  void validate() const;      // throws InputError naming the bad field
+  void validate() const;  // throws InputError naming the bad field
 };
 
 class BiotacLikeSensor final : public TactileSensorModel {
@@ -57,6 +66,7 @@ class BiotacLikeSensor final : public TactileSensorModel {
   BiotacLikeOptions options_;
   std::vector<Eigen::Vector3d> samples_;  // q_k
   std::vector<double> area_;              // A_k
+  double skin_area_ = 0.0;                // sum of A_k, mm^2
   Eigen::MatrixXd kernel_;                // 19 x M, rows normalised to sum 1
   std::vector<Eigen::Vector3d> electrodes_;
   mutable std::mt19937_64 rng_;
