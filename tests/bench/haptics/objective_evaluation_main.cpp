@@ -26,7 +26,7 @@ using namespace onetip::haptics;
 
 int main(int argc, char** argv) {
   if (argc < 2) {
-    std::cerr << "usage: haptic_objective_evaluation OUT_DIR [noise_counts]\n";
+    std::cerr << "usage: haptic_objective_evaluation OUT_DIR [biotac|onetip] [noise_counts]\n";
     return 2;
   }
   const std::string dir = argv[1];
