@@ -21,7 +21,7 @@
 //             asperities keep the layer from closing (an impedance range of ~1000x)
 //   Z_j/Z0  = h0 / h_j
 //   e_j     = 4095 * Z_j / (Z_j + R_j)   (a voltage divider with R_j = Z0 (1 + 0.05 (j mod 5)):
-//             electrodes differ at rest, 1706-2048 counts, and saturate towards 4095).
+//             electrodes differ at rest, 1861-2048 counts, and saturate towards 4095).
 // Small-signal gain at rest: 4095 / (4 h0) = 512 counts/mm, rising ~2.6x at 1.5 mm.
 // The DC pressure channel follows the indented volume:
 //   p_dc = 500 + g_p * sum_k A_k delta_k,  g_p = 8 counts/mm^3.
