@@ -5,9 +5,9 @@ benchmark, from the CSVs in this folder.
 
 Inputs (made by the programs in tests/bench/haptics/, see README.md):
   objective_<sensor>_evaluation.csv, objective_<sensor>_summary.csv  (sensor: biotac, onetip)
-  onetip_features.csv, bench_knn.json (Google Benchmark JSON)
+  onetip_features.csv, bench_knn.json (Google Benchmark JSON), neighbor_benefit.csv
 Outputs: objective_fig7_<sensor>.png, objective_by_interaction_<sensor>.png,
-  onetip_features.png, knn_speed.png
+  onetip_features.png, knn_speed.png, neighbor_benefit.png
 Run: /usr/bin/python3 docs/haptics/make_charts.py
 """
 import csv
@@ -127,6 +127,28 @@ def knn_speed(bench):
     plt.close(fig)
 
 
+def neighbor_benefit(rows):
+    """Change of the mean Eq. 9 error from n = 1 to n = 4 and 8, per DoF, vs the side interactions' tilt."""
+    error = {(float(r["side_tilt_deg"]), int(r["dof"]), int(r["neighbors"])): float(r["mean_normalized_error"])
+             for r in rows}
+    tilts = sorted({k[0] for k in error})
+    fig, axes = plt.subplots(1, 3, figsize=(11, 3.6), sharey=True)
+    for ax, dof in zip(axes, (1, 2, 3)):
+        for n, style in ((4, "o-"), (8, "s-")):
+            ax.plot(tilts, [100.0 * (error[(t, dof, n)] / error[(t, dof, 1)] - 1.0) for t in tilts], style,
+                    label=f"n = {n}")
+        ax.axhline(0.0, color="k", lw=0.8)
+        ax.set_title(f"{dof}-DoF display")
+        ax.set_xlabel("side interactions' plate tilt (deg)")
+        ax.grid(alpha=0.3)
+    axes[0].set_ylabel("e_f change vs n = 1 (%)\n(below 0: neighbours help)")
+    axes[0].legend(fontsize=8)
+    fig.suptitle("BioTac-like model: more neighbours help while the remote contacts stay reachable")
+    fig.tight_layout()
+    fig.savefig(os.path.join(HERE, "neighbor_benefit.png"), dpi=110)
+    plt.close(fig)
+
+
 def main():
     for sensor in SENSORS:
         if os.path.exists(os.path.join(HERE, f"objective_{sensor}_summary.csv")):
@@ -134,6 +156,8 @@ def main():
             by_interaction(read(f"objective_{sensor}_evaluation.csv"), sensor)
     if os.path.exists(os.path.join(HERE, "onetip_features.csv")):
         onetip_features(read("onetip_features.csv"))
+    if os.path.exists(os.path.join(HERE, "neighbor_benefit.csv")):
+        neighbor_benefit(read("neighbor_benefit.csv"))
     if os.path.exists(os.path.join(HERE, "bench_knn.json")):
         with open(os.path.join(HERE, "bench_knn.json")) as f:
             knn_speed(json.load(f)["benchmarks"])

@@ -82,4 +82,14 @@ void BiotacLikeSensor::sense(const ContactPlane& plate, double* out) const {
   out[kElectrodes] = counts(kPressureBase + kPressureGain * volume);
 }
 
+namespace {
+BiotacLikeOptions withSeed(BiotacLikeOptions options, std::uint64_t seed) {
+  options.seed = seed;
+  return options;
+}
+}  // namespace
+
+BiotacLikeEvaluationSensors::BiotacLikeEvaluationSensors(BiotacLikeOptions options)
+    : collection(withSeed(options, 1)), remote(withSeed(options, 2)), in_device(withSeed(options, 3)) {}
+
 }  // namespace onetip::haptics

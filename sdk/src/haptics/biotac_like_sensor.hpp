@@ -72,4 +72,12 @@ class BiotacLikeSensor final : public TactileSensorModel {
   mutable std::mt19937_64 rng_;
 };
 
+// The objective evaluation's three sensors: the one in the display during
+// collection, the one in the remote environment and the one in the display
+// during replay. Same model and options, independent noise (seeds 1, 2, 3).
+struct BiotacLikeEvaluationSensors {
+  explicit BiotacLikeEvaluationSensors(BiotacLikeOptions options);
+  BiotacLikeSensor collection, remote, in_device;
+};
+
 }  // namespace onetip::haptics

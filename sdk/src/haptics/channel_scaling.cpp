@@ -38,4 +38,12 @@ void ChannelScaling::apply(const double* in, float* out) const {
   for (size_t c = 0; c < scale.size(); ++c) out[c] = static_cast<float>(in[c] * scale[c]);
 }
 
+double ChannelScaling::meanStandardizedError(const double* a, const double* b) const {
+  const int counted = channels() - constantChannels();
+  if (counted == 0) return 0.0;
+  double sum = 0.0;
+  for (size_t c = 0; c < scale.size(); ++c) sum += std::abs(a[c] - b[c]) * scale[c];
+  return sum / counted;
+}
+
 }  // namespace onetip::haptics

@@ -24,6 +24,10 @@ struct ChannelScaling {
   int constantChannels() const noexcept;
   // out[i] = in[i] * scale[i], i < channels()
   void apply(const double* in, float* out) const;
+  // One sample's standardised error (the summand of the journal's Eq. 9):
+  //   1/N' sum_i |a_i - b_i| / sigma_i  over the N' non-constant channels
+  // (0 when every channel is constant).
+  double meanStandardizedError(const double* a, const double* b) const;
 };
 
 }  // namespace onetip::haptics

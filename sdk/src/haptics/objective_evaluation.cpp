@@ -94,13 +94,11 @@ std::vector<EvaluationRow> runObjectiveEvaluation(const TactileDataset& full, co
             const double* s = rec.sensed.data() + k * nc;
             const RenderResult r = renderer.render(s, n);
             in_device.sense(device.forward(r.command).plane, felt.data());
-            for (size_t i = 0; i < nc; ++i) {
-              const double err = std::abs(s[i] - felt[i]);
-              sum_norm += err * scaling.scale[i];
-              if (scaling.scale[i] > 0.0) sum_full += err / full_scale[i];
-            }
+            sum_norm += scaling.meanStandardizedError(s, felt.data());
+            for (size_t i = 0; i < nc; ++i)
+              if (scaling.scale[i] > 0.0) sum_full += std::abs(s[i] - felt[i]) / full_scale[i];
           }
-          row.normalized_error = sum_norm / (static_cast<double>(samples) * counted);
+          row.normalized_error = sum_norm / static_cast<double>(samples);
           row.percent_full_scale = 100.0 * sum_full / (static_cast<double>(samples) * counted);
           rows.push_back(row);
         }

@@ -33,19 +33,19 @@ int main(int argc, char** argv) {
   const std::string sensor_name = argc > 2 ? argv[2] : "biotac";
   const PlatformKinematics device;
   ObjectiveEvaluationOptions options;
-  std::unique_ptr<TactileSensorModel> collection, remote, in_device;
+  std::unique_ptr<BiotacLikeEvaluationSensors> biotac;
+  std::unique_ptr<OnetipContactSensor> onetip_sensor;  // deterministic: serves all three roles
+  const TactileSensorModel *collection = nullptr, *remote = nullptr, *in_device = nullptr;
   if (sensor_name == "biotac") {
     BiotacLikeOptions o;
     o.noise_counts = argc > 3 ? std::stod(argv[3]) : 2.0;
-    collection = std::make_unique<BiotacLikeSensor>(o);
-    o.seed = 2;
-    remote = std::make_unique<BiotacLikeSensor>(o);
-    o.seed = 3;
-    in_device = std::make_unique<BiotacLikeSensor>(o);
+    biotac = std::make_unique<BiotacLikeEvaluationSensors>(o);
+    collection = &biotac->collection;
+    remote = &biotac->remote;
+    in_device = &biotac->in_device;
   } else if (sensor_name == "onetip") {
-    collection = std::make_unique<OnetipContactSensor>();
-    remote = std::make_unique<OnetipContactSensor>();
-    in_device = std::make_unique<OnetipContactSensor>();
+    onetip_sensor = std::make_unique<OnetipContactSensor>();
+    collection = remote = in_device = onetip_sensor.get();
     options.interactions.rate_hz = 25.0;
     options.interactions.repetitions = 1;
   } else {

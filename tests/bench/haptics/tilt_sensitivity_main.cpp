@@ -24,16 +24,6 @@ int main(int argc, char** argv) {
   const PlatformKinematics device;
   const BiotacLikeSensor sensor;
   const ChannelScaling scaling = ChannelScaling::fromDataset(simulateDataset(device, sensor, 3.0));
-  auto normalizedError = [&](const std::vector<double>& a, const std::vector<double>& b) {
-    double sum = 0.0;
-    int counted = 0;
-    for (size_t i = 0; i < a.size(); ++i) {
-      if (scaling.scale[i] <= 0.0) continue;
-      sum += std::abs(a[i] - b[i]) * scaling.scale[i];
-      ++counted;
-    }
-    return sum / counted;
-  };
   std::printf("servo_deg,press_mm,e_f_tilt\n");
   for (double angle = 90.0; angle <= 190.0; angle += 20.0) {
     const PlatformPose pose = device.forward({angle, angle, angle});
@@ -43,7 +33,7 @@ int main(int argc, char** argv) {
       const Eigen::Vector3d axis(std::cos(a * M_PI / 4), std::sin(a * M_PI / 4), 0.0);
       ContactPlane tilted = pose.plane;
       tilted.normal = Eigen::AngleAxisd(tilt_deg * kRadPerDeg, axis) * tilted.normal;
-      total += normalizedError(sensor.sense(tilted), nominal) / 8.0;
+      total += scaling.meanStandardizedError(sensor.sense(tilted).data(), nominal.data()) / 8.0;
     }
     std::printf("%.0f,%.2f,%.3f\n", angle, pose.z_mm, total);
   }

@@ -151,6 +151,10 @@ TEST(KnnRenderer, ExactMatchesAndConstantChannels) {
   d.append({195, 195, 195}, {4.0, 5.0, 7.0});
   const KnnRenderer renderer(d);
   EXPECT_EQ(renderer.scaling().constantChannels(), 2);
+  // Eq. 9's summand counts only the informative channel: |1 - 3| / sigma_0,
+  // sigma_0 = population sd of {1, 2, 2, 4} = sqrt(4.75 / 4).
+  const double a[3] = {1.0, 5.0, 7.0}, b[3] = {3.0, 0.0, 0.0};
+  EXPECT_NEAR(renderer.scaling().meanStandardizedError(a, b), 2.0 / std::sqrt(4.75 / 4.0), 1e-12);
   // Query equal to rows 1 and 2 in the only informative channel, far off in
   // the constant ones: an exact match, the mean of the two matching rows.
   const double s[3] = {2.0, 50.0, -7.0};
