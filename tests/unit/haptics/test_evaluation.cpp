@@ -45,7 +45,6 @@ double meanOver(const std::map<Key, ConditionSummary>& c, const std::function<bo
   return sum / count;
 }
 
-
 // The shortened BioTac-like evaluation (2 counts of noise; collection, remote
 // and in-device sensors with their own noise seeds).
 std::vector<EvaluationRow> runBiotacEvaluation(double side_tilt_deg) {
