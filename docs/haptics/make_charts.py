@@ -128,22 +128,38 @@ def knn_speed(bench):
 
 
 def neighbor_benefit(rows):
-    """Change of the mean Eq. 9 error from n = 1 to n = 4 and 8, per DoF, vs the side interactions' tilt."""
-    error = {(float(r["side_tilt_deg"]), int(r["dof"]), int(r["neighbors"])): float(r["mean_normalized_error"])
-             for r in rows}
-    tilts = sorted({k[0] for k in error})
-    fig, axes = plt.subplots(1, 3, figsize=(11, 3.6), sharey=True)
-    for ax, dof in zip(axes, (1, 2, 3)):
+    """Change of the mean Eq. 9 error from n = 1 to n = 4 and 8, per DoF: against the side interactions'
+    tilt (top), and at the default 30 deg tilt with more sensor noise or the paper's servos (bottom)."""
+    error = {(float(r["side_tilt_deg"]), float(r["noise_counts"]), int(r["servo_dynamics"]), int(r["dof"]),
+              int(r["neighbors"])): float(r["mean_normalized_error"]) for r in rows}
+    change = lambda run, dof, n: 100.0 * (error[run + (dof, n)] / error[run + (dof, 1)] - 1.0)
+    tilts = sorted({k[0] for k in error if k[1:3] == (2.0, 0)})
+    variants = [((30.0, 2.0, 0), "2 counts\n(docs)"), ((30.0, 10.0, 0), "10 counts"), ((30.0, 30.0, 0), "30 counts"),
+                ((30.0, 2.0, 1), "2 counts,\npaper's servos")]
+    fig, axes = plt.subplots(2, 3, figsize=(12, 6.8), sharey="row")
+    for col, dof in enumerate((1, 2, 3)):
+        ax = axes[0][col]
         for n, style in ((4, "o-"), (8, "s-")):
-            ax.plot(tilts, [100.0 * (error[(t, dof, n)] / error[(t, dof, 1)] - 1.0) for t in tilts], style,
-                    label=f"n = {n}")
+            ax.plot(tilts, [change((t, 2.0, 0), dof, n) for t in tilts], style, label=f"n = {n}")
         ax.axhline(0.0, color="k", lw=0.8)
         ax.set_title(f"{dof}-DoF display")
         ax.set_xlabel("side interactions' plate tilt (deg)")
         ax.grid(alpha=0.3)
-    axes[0].set_ylabel("e_f change vs n = 1 (%)\n(below 0: neighbours help)")
-    axes[0].legend(fontsize=8)
-    fig.suptitle("BioTac-like model: more neighbours help while the remote contacts stay reachable")
+        ax = axes[1][col]
+        xs = range(len(variants))
+        for n, offset in ((4, -0.18), (8, 0.18)):
+            ax.bar([x + offset for x in xs], [change(v, dof, n) for v, _ in variants], width=0.34, label=f"n = {n}")
+        ax.axhline(0.0, color="k", lw=0.8)
+        ax.set_xticks(list(xs))
+        ax.set_xticklabels([label for _, label in variants], fontsize=8)
+        ax.set_xlabel("at 30 deg tilt: sensor noise / device model")
+        ax.grid(alpha=0.3, axis="y")
+    axes[0][0].set_ylabel("e_f change vs n = 1 (%)\n(below 0: neighbours help)")
+    axes[1][0].set_ylabel("e_f change vs n = 1 (%)")
+    axes[0][0].legend(fontsize=8)
+    axes[1][0].legend(fontsize=8)
+    fig.suptitle("BioTac-like model: more neighbours help while the remote contacts stay reachable;\n"
+                 "noise and servo dynamics do not change that")
     fig.tight_layout()
     fig.savefig(os.path.join(HERE, "neighbor_benefit.png"), dpi=110)
     plt.close(fig)

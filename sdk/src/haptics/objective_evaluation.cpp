@@ -20,6 +20,7 @@ void ObjectiveEvaluationOptions::validate() const {
     if (n < 1) throw InputError("ObjectiveEvaluationOptions.neighbors: must be >= 1");
   for (int d : dofs) deviceDofFromInt(d);
   interactions.validate();
+  if (servo) servo->validate();
 }
 
 namespace {
@@ -90,10 +91,14 @@ std::vector<EvaluationRow> runObjectiveEvaluation(const TactileDataset& full, co
           row.dataset_rows = reduced.size();
           const size_t samples = rec.sensed.size() / nc;
           double sum_norm = 0.0, sum_full = 0.0;
+          std::optional<ServoResponse> servos;
+          if (options.servo) servos.emplace(*options.servo);
           for (size_t k = 0; k < samples; ++k) {
             const double* s = rec.sensed.data() + k * nc;
             const RenderResult r = renderer.render(s, n);
-            in_device.sense(device.forward(r.command).plane, felt.data());
+            const std::array<double, 3> angles =
+                servos ? servos->advance(r.command, 1.0 / options.interactions.rate_hz) : r.command;
+            in_device.sense(device.forward(angles).plane, felt.data());
             sum_norm += scaling.meanStandardizedError(s, felt.data());
             for (size_t i = 0; i < nc; ++i)
               if (scaling.scale[i] > 0.0) sum_full += std::abs(s[i] - felt[i]) / full_scale[i];

@@ -14,14 +14,19 @@
 // condition); fullScale_i from the sensor model (4095 counts for BioTac-like),
 // or, when the model declares none (onetip's displacements), channel i's
 // range (max - min) over the full dataset. Remote plates are placed against
-// the remote sensor's FingertipShape.
+// the remote sensor's FingertipShape. By default the device is where m(k) puts
+// it at once; with `servo` set, m(k) streams through the servos' response
+// (servo_response.hpp, starting at rest for each replay) and s_r(k) is felt
+// 1 / rate_hz after m(k) was sent.
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <vector>
 
 #include "haptics/dof_reduction.hpp"
 #include "haptics/remote_interactions.hpp"
+#include "haptics/servo_response.hpp"
 #include "haptics/tactile_dataset.hpp"
 #include "haptics/tactile_sensor_model.hpp"
 
@@ -46,6 +51,7 @@ struct ObjectiveEvaluationOptions {
   std::vector<int> neighbors = {1, 4, 8};
   std::vector<int> dofs = {1, 2, 3};
   InteractionOptions interactions;
+  std::optional<ServoResponseOptions> servo;  // unset: the device follows m(k) instantly
   void validate() const;  // throws InputError naming the bad field
 };
 

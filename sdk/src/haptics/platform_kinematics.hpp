@@ -21,7 +21,8 @@
 // (degrees; pitch > 0 lifts the front, roll > 0 lifts the left side).
 // Neglected: the small lateral motion of the vertices when tilted, cable
 // stretch, spring and fingertip compliance (the platform goes where the cables
-// put it), and servo dynamics.
+// put it), and servo dynamics (these are servo_response.hpp, for replays over
+// time).
 // Defaults: r_p = 1.5 mm (4.3 mm of travel over 165 deg), r_b = 7 mm
 // (about 22 deg of tilt), gap = 1.5 mm.
 #pragma once
