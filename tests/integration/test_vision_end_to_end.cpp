@@ -14,6 +14,7 @@
 #include "pipeline/frame_processor.hpp"
 #include "sim/ground_truth_writer.hpp"
 #include "sim/simulator.hpp"
+#include "scratch_dir.hpp"
 
 using namespace onetip;
 namespace fs = std::filesystem;
@@ -21,13 +22,6 @@ namespace fs = std::filesystem;
 namespace {
 const fs::path kSource(ONETIP_SOURCE_DIR);
 const fs::path kReal = fs::path(ONETIP_SHARED_DIR) / "data" / "real" / "opencv_stereo_9x6";
-
-fs::path tempDir(const std::string& name) {
-  fs::path d = fs::temp_directory_path() / ("onetip_e2e_" + name + "_" + std::to_string(::getpid()));
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
 
 int run(const std::string& cmd) { return std::system((cmd + " >/dev/null 2>&1").c_str()); }
 
@@ -86,7 +80,8 @@ TEST(VisionEndToEnd, MarkersMatchTheTruthWithTheTrueCalibration) {
 }
 
 TEST(VisionEndToEnd, MarkersMatchTheTruthWithTheCalibrationOnetipCalibrateMade) {
-  const fs::path dir = tempDir("calib");
+  const test_support::ScratchDir scratch("onetip-e2e");
+  const fs::path dir = scratch.path();
   const std::string cli = ONETIP_CLI;
   ASSERT_EQ(run(cli + " sim --quiet --scenario " + (kSource / "samples/scenarios/calibration.yaml").string() +
                 " --out " + (dir / "scene").string()),
@@ -118,7 +113,8 @@ TEST(VisionEndToEnd, RealPhotosThroughOnetipProcessReproduceTheBoard) {
   for (int pair = 1; pair <= 9; ++pair) {
     char name[32];
     std::snprintf(name, sizeof name, "pair%02d.png", pair);
-    const fs::path dir = tempDir(std::string("real_") + name);
+    const test_support::ScratchDir scratch("onetip-e2e");
+    const fs::path dir = scratch.path();
     fs::create_directories(dir / "frames");
     fs::copy_file(kReal / "sbs" / name, dir / "frames" / name);
     ASSERT_EQ(run(cli + " process --quiet --calib " + calib + " --pattern " + pattern + " --input " +
@@ -154,7 +150,8 @@ TEST(VisionEndToEnd, RealPhotosThroughOnetipProcessReproduceTheBoard) {
 }
 
 TEST(VisionEndToEnd, BadFramesAreSkippedAndCountedAndTheStreamGoesOn) {
-  const fs::path dir = tempDir("bad_frames");
+  const test_support::ScratchDir scratch("onetip-e2e");
+  const fs::path dir = scratch.path();
   const std::string cli = ONETIP_CLI;
   ASSERT_EQ(run(cli + " sim --quiet --frames 6 --scenario " + (kSource / "samples/scenarios/press.yaml").string() +
                 " --out " + (dir / "sim").string()),

@@ -10,24 +10,12 @@
 #include "capture/folder_source.hpp"
 #include "capture/open_frame_source.hpp"
 #include "core/error.hpp"
+#include "scratch_dir.hpp"
 
 namespace onetip::capture {
 namespace {
 
 namespace fs = std::filesystem;
-
-struct TempDir {
-  fs::path path;
-  TempDir() {
-    path = fs::temp_directory_path() /
-           ("onetip_capture_" + std::to_string(::getpid()) + "_" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(path);
-    fs::create_directories(path);
-  }
-  ~TempDir() { fs::remove_all(path); }
-  std::string file(const std::string& name) const { return (path / name).string(); }
-};
 
 cv::Mat pattern(int w, int h, int shade) {
   cv::Mat img(h, w, CV_8UC1, cv::Scalar(shade));
@@ -43,7 +31,7 @@ void writeBytes(const std::string& path, const std::vector<std::uint8_t>& bytes)
 }
 
 TEST(FolderSource, ReadsFramesSortedByNameAndSkipsBadOnes) {
-  TempDir dir;
+  const onetip::test_support::ScratchDir dir("onetip-capture");
   const cv::Mat a = pattern(96, 64, 10), b = pattern(96, 64, 40), c = pattern(96, 64, 70);
   cv::imwrite(dir.file("frame_002.png"), b);
   cv::imwrite(dir.file("frame_000.png"), a);
@@ -58,7 +46,7 @@ TEST(FolderSource, ReadsFramesSortedByNameAndSkipsBadOnes) {
   cv::imwrite(dir.file("frame_006.png"), colour);
   writeBytes(dir.file("notes.txt"), {'h', 'i'});
 
-  FolderSource src(dir.path.string());
+  FolderSource src(dir.path().string());
   EXPECT_EQ(src.files().size(), 7u);
   Frame f = src.next();
   ASSERT_TRUE(f.ok());
@@ -87,21 +75,21 @@ TEST(FolderSource, ReadsFramesSortedByNameAndSkipsBadOnes) {
 }
 
 TEST(FolderSource, OneFrameIsAValidStream) {
-  TempDir dir;
+  const onetip::test_support::ScratchDir dir("onetip-capture");
   cv::imwrite(dir.file("only.png"), pattern(32, 32, 0));
-  auto src = openFrameSource(dir.path.string());
+  auto src = openFrameSource(dir.path().string());
   EXPECT_TRUE(src->next().ok());
   EXPECT_EQ(src->next().status, FrameStatus::end);
 }
 
 TEST(FolderSource, MissingOrEmptyFolderIsAnInputError) {
-  TempDir dir;
-  EXPECT_THROW(FolderSource(dir.path.string()), InputError);  // no images
+  const onetip::test_support::ScratchDir dir("onetip-capture");
+  EXPECT_THROW(FolderSource(dir.path().string()), InputError);  // no images
   EXPECT_THROW(FolderSource(dir.file("missing")), InputError);
 }
 
 TEST(VideoSource, ReadsAVideoFileAsGreyFrames) {
-  TempDir dir;
+  const onetip::test_support::ScratchDir dir("onetip-capture");
   const std::string path = dir.file("clip.avi");
   {
     cv::VideoWriter w(path, cv::VideoWriter::fourcc('M', 'J', 'P', 'G'), 25.0, cv::Size(96, 64), false);
@@ -124,7 +112,7 @@ TEST(OpenFrameSource, SchemesPathsAndErrors) {
   EXPECT_THROW(openFrameSource(""), InputError);
   EXPECT_THROW(openFrameSource("/nonexistent/frames"), InputError);
   EXPECT_THROW(openFrameSource("nosuchscheme:foo.yaml"), InputError);
-  TempDir dir;
+  const onetip::test_support::ScratchDir dir("onetip-capture");
   writeBytes(dir.file("not_a_video.avi"), std::vector<std::uint8_t>(100, 1));
   EXPECT_THROW(openFrameSource(dir.file("not_a_video.avi")), InputError);
 

@@ -10,25 +10,15 @@
 #include "core/csv_table.hpp"
 #include "core/error.hpp"
 #include "core/pattern.hpp"
+#include "scratch_dir.hpp"
+#include "input_error_of.hpp"
 
 using namespace onetip;
 namespace fs = std::filesystem;
+using onetip::test_support::inputErrorOf;
 
 namespace {
-fs::path tempDir() {
-  fs::path d = fs::temp_directory_path() / ("onetip_core_" + std::to_string(::getpid()));
-  fs::create_directories(d);
-  return d;
-}
 void writeText(const fs::path& p, const std::string& s) { std::ofstream(p) << s; }
-std::string errorOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
 }  // namespace
 
 TEST(Files, ReadsTheSharedReferenceCalibration) {
@@ -43,6 +33,7 @@ TEST(Files, ReadsTheSharedReferenceCalibration) {
 }
 
 TEST(Files, CalibrationRoundTrip) {
+  const test_support::ScratchDir scratch("onetip-core-files");
   StereoCalibration c;
   c.image_width = 1920;
   c.image_height = 1080;
@@ -52,7 +43,7 @@ TEST(Files, CalibrationRoundTrip) {
   c.K_right = c.K_left;
   c.D_left = {-0.1, 0.02, 0.001, -0.002, 0.003};
   c.T = {-24, 0.1, 0.2};
-  const auto p = (tempDir() / "calib.yaml").string();
+  const auto p = (scratch.path() / "calib.yaml").string();
   saveCalibration(c, p, 0.123);
   const StereoCalibration d = loadCalibration(p);
   EXPECT_EQ(d.flip_right, true);
@@ -63,30 +54,33 @@ TEST(Files, CalibrationRoundTrip) {
 }
 
 TEST(Files, BadCalibrationNamesTheKey) {
-  const auto dir = tempDir();
-  EXPECT_NE(errorOf([&] { loadCalibration((dir / "missing.yaml").string()); }).find("no such file"),
+  const test_support::ScratchDir scratch("onetip-core-files");
+  const auto dir = scratch.path();
+  EXPECT_NE(inputErrorOf([&] { loadCalibration((dir / "missing.yaml").string()); }).find("no such file"),
             std::string::npos);
   writeText(dir / "nok.yaml", "%YAML:1.0\n---\nimage_width: 100\nimage_height: 50\nsplit_x: 50\n");
-  EXPECT_NE(errorOf([&] { loadCalibration((dir / "nok.yaml").string()); }).find("flip_left"),
+  EXPECT_NE(inputErrorOf([&] { loadCalibration((dir / "nok.yaml").string()); }).find("flip_left"),
             std::string::npos);
   writeText(dir / "garbage.yaml", "%YAML:1.0\n---\n: : [\n");
-  EXPECT_NE(errorOf([&] { loadCalibration((dir / "garbage.yaml").string()); }), "");
+  EXPECT_NE(inputErrorOf([&] { loadCalibration((dir / "garbage.yaml").string()); }), "");
 }
 
 TEST(Files, PatternRoundTripAndValidation) {
-  const auto p = (tempDir() / "pattern.yaml").string();
+  const test_support::ScratchDir scratch("onetip-core-files");
+  const auto p = (scratch.path() / "pattern.yaml").string();
   savePattern({9, 13, 2.5}, p);
   const MarkerPattern q = loadPattern(p);
   EXPECT_EQ(q.rows, 9);
   EXPECT_EQ(q.cols, 13);
   EXPECT_DOUBLE_EQ(q.square_mm, 2.5);
-  writeText(tempDir() / "bad_pattern.yaml", "%YAML:1.0\n---\nrows: 0\ncols: 5\nsquare_mm: 1\n");
-  EXPECT_NE(errorOf([&] { loadPattern((tempDir() / "bad_pattern.yaml").string()); }).find("rows"),
+  writeText(scratch.path() / "bad_pattern.yaml", "%YAML:1.0\n---\nrows: 0\ncols: 5\nsquare_mm: 1\n");
+  EXPECT_NE(inputErrorOf([&] { loadPattern((scratch.path() / "bad_pattern.yaml").string()); }).find("rows"),
             std::string::npos);
 }
 
 TEST(Files, AtomicFileLeavesNothingWithoutCommit) {
-  const auto p = tempDir() / "out.csv";
+  const test_support::ScratchDir scratch("onetip-core-files");
+  const auto p = scratch.path() / "out.csv";
   fs::remove(p);
   {
     CsvWriter w(p.string(), {"a", "b"});
@@ -101,6 +95,6 @@ TEST(Files, AtomicFileLeavesNothingWithoutCommit) {
   const CsvTable t = readCsv(p.string());
   ASSERT_EQ(t.rows.size(), 1u);
   EXPECT_EQ(t.rows[0][1], "2.5");
-  for (const auto& e : fs::directory_iterator(tempDir()))
+  for (const auto& e : fs::directory_iterator(scratch.path()))
     EXPECT_EQ(e.path().string().find(".tmp."), std::string::npos) << e.path();
 }

@@ -9,6 +9,7 @@
 #include "core/error.hpp"
 #include "devices/belt_device.hpp"
 #include "frame_emulator.hpp"
+#include "scratch_dir.hpp"
 
 namespace onetip::devices {
 namespace {
@@ -20,10 +21,12 @@ using testing::FrameEvent;
 // A table shaped like the thesis' Fig. 2.3: 25 % of the force at 60 % of the angle.
 std::vector<AngleForcePoint> thesisLikePoints() { return {{0.25, 120.0}, {0.5, 150.0}, {0.75, 175.0}, {1.0, 200.0}}; }
 
+// Files written here go to one scratch directory, removed when the test process exits.
 std::string writeFile(const std::string& name, const std::string& text) {
-  const auto path = std::filesystem::temp_directory_path() / ("onetip_devices_" + std::to_string(::getpid()) + "_" + name);
+  static const onetip::test_support::ScratchDir scratch("onetip-devices");
+  const std::string path = scratch.file(name);
   std::ofstream(path) << text;
-  return path.string();
+  return path;
 }
 
 TEST(BeltForceTable, InterpolatesPiecewiseLinearlyThroughTheProcedurePoints) {

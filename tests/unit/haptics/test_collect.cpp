@@ -24,6 +24,7 @@
 #include "haptics/dataset_binary.hpp"
 #include "haptics/display_grid.hpp"
 #include "haptics/tactile_dataset.hpp"
+#include "scratch_dir.hpp"
 
 extern char** environ;
 
@@ -32,13 +33,6 @@ using namespace onetip::haptics;
 namespace fs = std::filesystem;
 
 namespace {
-
-fs::path tempDir(const std::string& name) {
-  fs::path d = fs::temp_directory_path() / ("onetip_collect_" + name + "_" + std::to_string(::getpid()));
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
 
 std::string slurp(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);
@@ -71,7 +65,8 @@ constexpr double kStep = 33.0;  // 5 angles per motor: 125 configurations
 
 TEST(Collect, StoppedAndResumedRunsEqualTheUninterruptedDataset) {
   Fixture f;
-  const auto dir = tempDir("resume");
+  const test_support::ScratchDir scratch("onetip-collect");
+  const auto dir = scratch.path();
   calib::CollectionOptions o;
   o.step_deg = kStep;
   o.flush_every_rows = 7;
@@ -122,7 +117,8 @@ TEST(Collect, StoppedAndResumedRunsEqualTheUninterruptedDataset) {
 
 TEST(Collect, RefusesAProgressFileOfOtherOptionsOrOffTheGrid) {
   Fixture f;
-  const auto dir = tempDir("mismatch");
+  const test_support::ScratchDir scratch("onetip-collect");
+  const auto dir = scratch.path();
   calib::CollectionOptions o;
   o.step_deg = kStep;
   o.out_path = (dir / "d.csv").string();
@@ -189,7 +185,8 @@ Exit runCli(const std::vector<std::string>& args, const fs::path& dir, bool inte
 }  // namespace
 
 TEST(CollectCli, SigintStopsCleanlyAndTheSameCommandResumes) {
-  const auto dir = tempDir("sigint");
+  const test_support::ScratchDir scratch("onetip-collect");
+  const auto dir = scratch.path();
   const std::vector<std::string> args = {"--step", "4", "--quiet", "--out", (dir / "d.csv").string()};
   const Exit stopped = runCli(args, dir, true);
   ASSERT_EQ(stopped.status, 1) << stopped.stderr_text;
@@ -206,7 +203,8 @@ TEST(CollectCli, SigintStopsCleanlyAndTheSameCommandResumes) {
 }
 
 TEST(CollectCli, BadOptionsGiveOneLineAndNoOutput) {
-  const auto dir = tempDir("bad");
+  const test_support::ScratchDir scratch("onetip-collect");
+  const auto dir = scratch.path();
   const std::string out = (dir / "d.csv").string();
   const std::vector<std::vector<std::string>> bad = {
       {"--out", out, "--step", "0"},          {"--out", out, "--step", "abc"},

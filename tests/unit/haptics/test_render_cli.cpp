@@ -1,7 +1,6 @@
 // `onetip render` as CONVENTIONS.md states it: output and timing files, and
 // one-line errors with no output file on bad input.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cstdio>
 #include <filesystem>
@@ -10,17 +9,13 @@
 #include "core/csv_table.hpp"
 #include "haptics/knn_renderer.hpp"
 #include "haptics/tactile_dataset.hpp"
+#include "scratch_dir.hpp"
 
 using namespace onetip;
 using namespace onetip::haptics;
 namespace fs = std::filesystem;
 
 namespace {
-fs::path tempDir() {
-  fs::path d = fs::temp_directory_path() / ("onetip_render_cli_" + std::to_string(::getpid()));
-  fs::create_directories(d);
-  return d;
-}
 struct Run {
   int status;
   std::string output;
@@ -37,7 +32,8 @@ void write(const fs::path& p, const std::string& text) { std::ofstream(p) << tex
 }  // namespace
 
 TEST(RenderCli, WritesCommandsAndTimingPerConventions) {
-  const auto dir = tempDir();
+  const test_support::ScratchDir scratch("onetip-render-cli");
+  const auto dir = scratch.path();
   write(dir / "d.csv", "m1,m2,m3,s1,s2\n30,30,30,0,0\n60,90,120,10,1\n195,195,195,20,4\n90,60,30,5,3\n");
   write(dir / "q.csv", "s1,s2\n0,0\n9,1.5\n30,-2\n");
   const auto r = run("--dataset " + (dir / "d.csv").string() + " --queries " + (dir / "q.csv").string() +
@@ -63,7 +59,8 @@ TEST(RenderCli, WritesCommandsAndTimingPerConventions) {
 }
 
 TEST(RenderCli, BadInputGivesOneLineErrorAndNoOutput) {
-  const auto dir = tempDir();
+  const test_support::ScratchDir scratch("onetip-render-cli");
+  const auto dir = scratch.path();
   write(dir / "d.csv", "m1,m2,m3,s1,s2\n30,30,30,0,0\n");
   write(dir / "q3.csv", "s1,s2,s3\n1,2,3\n");
   write(dir / "bad.csv", "s1,s2\n1,x\n");

@@ -15,6 +15,7 @@
 #include "haptics/vibration_channel.hpp"
 #include "haptics/vibration_plant.hpp"
 #include "haptics/vibration_table.hpp"
+#include "scratch_dir.hpp"
 
 using namespace onetip::haptics;
 
@@ -141,7 +142,8 @@ TEST(VibrationTable, EntriesFitTheirPlantAndLookupPicksTheNearestConfiguration) 
     EXPECT_EQ(&table.lookup(m), &table.entry(nearest));
   }
 
-  const std::string path = ::testing::TempDir() + "/vibration_table.csv";
+  const onetip::test_support::ScratchDir scratch("onetip-vibration");
+  const std::string path = scratch.file("vibration_table.csv");
   table.save(path);
   const VibrationTable loaded = VibrationTable::load(path);
   ASSERT_EQ(loaded.size(), table.size());

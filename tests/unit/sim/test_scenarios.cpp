@@ -10,6 +10,7 @@
 #include "core/error.hpp"
 #include "sim/scenario.hpp"
 #include "sim/simulator.hpp"
+#include "scratch_dir.hpp"
 
 using namespace onetip;
 using namespace onetip::sim;
@@ -19,7 +20,8 @@ namespace {
 const fs::path kScenarios = fs::path(ONETIP_SOURCE_DIR) / "samples" / "scenarios";
 
 std::string loadError(const std::string& text) {
-  const fs::path p = fs::temp_directory_path() / ("onetip_bad_scenario_" + std::to_string(::getpid()) + ".yaml");
+  const test_support::ScratchDir scratch("onetip-scenario");
+  const fs::path p = scratch.path() / "bad_scenario.yaml";
   std::ofstream(p) << "%YAML:1.0\n---\n" << text;
   try {
     loadScenario(p.string());
@@ -65,8 +67,8 @@ TEST(Scenarios, BadFilesNameTheBadKey) {
 }
 
 TEST(Scenarios, SimCommandWritesWholeOutputOrNone) {
-  const fs::path out = fs::temp_directory_path() / ("onetip_sim_out_" + std::to_string(::getpid()));
-  fs::remove_all(out);
+  const test_support::ScratchDir scratch("onetip-sim-out");
+  const fs::path out = scratch.path() / "out";
   const std::string cli = ONETIP_CLI;
   ASSERT_EQ(run(cli + " sim --scenario " + (kScenarios / "press.yaml").string() + " --out " + out.string() +
                 " --frames 5 --quiet"),
@@ -80,12 +82,12 @@ TEST(Scenarios, SimCommandWritesWholeOutputOrNone) {
   EXPECT_EQ(markers.rows.size(), 5u * 17 * 17);
 
   // a bad scenario: non-zero exit, and neither a new folder nor a staging folder is left
-  const fs::path bad = fs::temp_directory_path() / ("onetip_bad_" + std::to_string(::getpid()) + ".yaml");
+  const fs::path bad = scratch.path() / "bad.yaml";
   std::ofstream(bad) << "%YAML:1.0\n---\nname: bad\nindenters:\n  - shape: ellipsoid\n    keyframes: 3\n";
   const fs::path out2 = out.string() + "_bad";
   EXPECT_NE(run(cli + " sim --scenario " + bad.string() + " --out " + out2.string()), 0);
   EXPECT_FALSE(fs::exists(out2));
-  for (const auto& e : fs::directory_iterator(fs::temp_directory_path()))
+  for (const auto& e : fs::directory_iterator(scratch.path()))
     EXPECT_EQ(e.path().string().find(out2.filename().string() + ".tmp"), std::string::npos);
   EXPECT_NE(run(cli + " sim --scenario " + (kScenarios / "press.yaml").string()), 0);  // --out missing
 }

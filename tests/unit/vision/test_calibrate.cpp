@@ -16,6 +16,7 @@
 #include "core/pattern.hpp"
 #include "vision/calibration_board.hpp"
 #include "vision/stereo_calibration.hpp"
+#include "scratch_dir.hpp"
 
 namespace onetip::vision {
 namespace {
@@ -127,19 +128,6 @@ std::string lastLine(const std::string& text) {
   return t.substr(t.rfind('\n') == std::string::npos ? 0 : t.rfind('\n') + 1);
 }
 
-struct TempDir {
-  fs::path path;
-  TempDir() {
-    path = fs::temp_directory_path() /
-           ("onetip_calib_" + std::to_string(::getpid()) + "_" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(path);
-    fs::create_directories(path);
-  }
-  ~TempDir() { fs::remove_all(path); }
-  std::string file(const std::string& n) const { return (path / n).string(); }
-};
-
 double angleDeg(const cv::Matx33d& A, const cv::Matx33d& B) {
   cv::Vec3d r;
   cv::Rodrigues(A * B.t(), r);
@@ -161,7 +149,7 @@ double undistortGapPx(const cv::Matx33d& K1, const cv::Vec<double, 5>& D1, const
 }
 
 TEST(CalibrateCommand, RealStereoPhotosMatchTheReference) {
-  TempDir dir;
+  const onetip::test_support::ScratchDir dir("onetip-calib");
   const std::string out = dir.file("c.yaml");
   const std::string pattern = kReal + "reference/pattern_9x6_nominal25mm.yaml";
   const CliRun run = runCli("--pattern " + pattern + " --input " + kReal + "sbs --out " + out);
@@ -186,7 +174,7 @@ TEST(CalibrateCommand, RealStereoPhotosMatchTheReference) {
 
   // The same frames with both halves mirrored, calibrated with the flips:
   // the views after the flip are the originals, so the result is the same.
-  TempDir flipped;
+  const onetip::test_support::ScratchDir flipped("onetip-calib");
   for (int i = 1; i <= 9; ++i) {
     const std::string name = "pair0" + std::to_string(i) + ".png";
     cv::Mat f = cv::imread(kReal + "sbs/" + name, cv::IMREAD_GRAYSCALE);
@@ -195,7 +183,7 @@ TEST(CalibrateCommand, RealStereoPhotosMatchTheReference) {
     cv::imwrite(flipped.file(name), f);
   }
   const std::string out2 = dir.file("flipped.yaml");
-  const CliRun run2 = runCli("--pattern " + pattern + " --input " + flipped.path.string() + " --out " +
+  const CliRun run2 = runCli("--pattern " + pattern + " --input " + flipped.path().string() + " --out " +
                              out2 + " --split-x 640 --flip-left --flip-right");
   ASSERT_EQ(run2.status, 0) << run2.out;
   const StereoCalibration c2 = loadCalibration(out2);
@@ -233,7 +221,7 @@ TEST(CalibrateCommand, JointRefinementBeatsFixedIntrinsicsOnRealPhotos) {
 }
 
 TEST(CalibrateCommand, BadInputExitsNonZeroWithOneLineAndNoFile) {
-  TempDir dir;
+  const onetip::test_support::ScratchDir dir("onetip-calib");
   const std::string out = dir.file("c.yaml");
   const std::string pattern = kReal + "reference/pattern_9x6_nominal25mm.yaml";
   fs::create_directories(dir.file("empty"));
