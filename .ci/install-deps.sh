@@ -8,7 +8,7 @@ packages=(
   libopencv-dev libeigen3-dev libceres-dev libpcl-dev
   libturbojpeg0-dev libv4l-dev linux-libc-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  libegl-dev libgl-dev libgles-dev libegl-mesa0 libgl1-mesa-dri libglfw3-dev libopengl-dev
+  libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri libglfw3-dev libopengl-dev
   xvfb xauth xdotool  # the windowed viewer test: a virtual X display and synthetic input
   libnanoflann-dev libspnav-dev libevdev-dev libasound2-dev
   pybind11-dev python3-dev python3-numpy python3-matplotlib python3-pytest

@@ -1,10 +1,9 @@
-#version 300 es
+#version 330 core
 // Fragment stage: the box-filtered checkerboard of sim/raster_checker.hpp
 // (same maths as the CPU FilteredChecker): the pixel footprint's half-widths
 // in (u, v) come from the screen derivatives of the affine (u, v), the
 // square wave is filtered through its triangle-wave integral, clipped to the
 // board at its edge, and the board and border rectangles are box-filtered.
-precision highp float;
 in vec2 v_uv;
 uniform float square_mm;
 uniform vec2 board_hi;      // (cols, rows) * square_mm; the board starts at -square_mm

@@ -1,4 +1,4 @@
-#version 300 es
+#version 330 core
 // Vertex stage of the simulator's GLSL renderer (sim/glsl_renderer.hpp).
 // pixel: distorted pixel coordinates of the pinhole view, centres at integers
 // (projected on the CPU with VirtualCamera::project); depth: camera-frame z, mm;

@@ -5,15 +5,20 @@
 #include <opencv2/imgproc.hpp>
 
 #include "core/error.hpp"
+#include "gl/gl_program.hpp"
+#include "gl/gl_vertex_array.hpp"
 #include "viewer/camera_markers.hpp"
 #include "viewer/gl_math.hpp"
-#include "viewer/gl_objects.hpp"
+#include "viewer/gl_texture.hpp"
 #include "viewer/input_object.hpp"
 #include "viewer/overlay_regions.hpp"
 #include "viewer/panel_layout.hpp"
 #include "viewer/viewer_shaders.hpp"
 
 namespace onetip::viewer {
+
+using gl::GlProgram;
+using gl::GlVertexArray;
 
 namespace {
 const Eigen::Vector3f kLight = Eigen::Vector3f(0.3F, -0.5F, 1.0F).normalized();

@@ -9,12 +9,12 @@
 
 #include "capture/open_frame_source.hpp"
 #include "core/error.hpp"
+#include "gl/gl_api.hpp"
+#include "gl/headless_context.hpp"
+#include "gl/offscreen_target.hpp"
 #include "sim/sim_frame_source.hpp"
-#include "viewer/egl_core_context.hpp"
 #include "viewer/frame_recorder.hpp"
-#include "viewer/gl_api.hpp"
 #include "viewer/glfw_window.hpp"
-#include "viewer/offscreen_target.hpp"
 #include "viewer/viewer_pose_log.hpp"
 #include "viewer/virtual_finger.hpp"
 
@@ -70,17 +70,20 @@ OpenedInput openInput(const ViewerOptions& o) {
   return in;
 }
 
-// Where the frames are drawn: a window, or an offscreen framebuffer.
+// Where the frames are drawn: a window, or an offscreen framebuffer in a
+// headless context, current on this thread for the surface's life.
 struct Surface {
   std::unique_ptr<ViewerWindow> window;
-  std::unique_ptr<EglCoreContext> egl;
-  std::unique_ptr<OffscreenTarget> target;
+  std::unique_ptr<gl::HeadlessContext> egl;
+  std::unique_ptr<gl::HeadlessContext::Binding> egl_current;
+  std::unique_ptr<gl::OffscreenTarget> target;
   cv::Size size;
 
   Surface(const ViewerOptions& o, bool headless) {
     if (headless) {
-      egl = std::make_unique<EglCoreContext>();
-      target = std::make_unique<OffscreenTarget>(o.window);
+      egl = std::make_unique<gl::HeadlessContext>();
+      egl_current = std::make_unique<gl::HeadlessContext::Binding>(*egl);
+      target = std::make_unique<gl::OffscreenTarget>(o.window, GL_RGBA8);
       target->bind();
       size = o.window;
     } else {
@@ -122,7 +125,7 @@ ViewerReport runViewer(const ViewerOptions& o, const FrameObserver& observer) {
   ViewerReport report;
   report.headless = o.runsHeadless();
   Surface surface(o, report.headless);
-  report.gl = currentGlDescription();
+  report.gl = gl::currentGlDescription();
   ViewerRendererOptions render = o.render;
   render.working_range = pipeline_options.pose.working_range;  // the gauges' full scale
   ViewerRenderer renderer(in.calib, render);
@@ -176,7 +179,7 @@ ViewerReport runViewer(const ViewerOptions& o, const FrameObserver& observer) {
     draw_ms.push_back(msSince(t_draw));
     if (need_image) {
       const auto t_read = Clock::now();
-      last = readFramebufferBgr(surface.size);
+      last = gl::readFramebufferBgr(surface.size);
       readback_ms.push_back(msSince(t_read));
     }
     view.rates.render_ms = msSince(t_draw);

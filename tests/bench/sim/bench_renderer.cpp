@@ -64,7 +64,7 @@ void glslFrame(benchmark::State& state, bool deformed, bool effects) {
     }
   }();
   if (!renderer) {
-    state.SkipWithError("no headless EGL / OpenGL ES 3 context");
+    state.SkipWithError("no headless EGL / OpenGL 3.3 core context");
     return;
   }
   renderLoop(state, *renderer, deformed, effects);

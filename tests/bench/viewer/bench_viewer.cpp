@@ -7,11 +7,11 @@
 
 #include <memory>
 
+#include "gl/gl_api.hpp"
+#include "gl/headless_context.hpp"
+#include "gl/offscreen_target.hpp"
 #include "sim/simulator.hpp"
-#include "viewer/egl_core_context.hpp"
-#include "viewer/gl_api.hpp"
 #include "viewer/glfw_window.hpp"
-#include "viewer/offscreen_target.hpp"
 #include "viewer/viewer_renderer.hpp"
 #include "viewer/viewer_session.hpp"
 
@@ -41,17 +41,18 @@ const PressedFrame& pressed() {
 void drawLoop(benchmark::State& state, bool read_back) {
   const PressedFrame& p = pressed();
   const cv::Size size(1280, 720);
-  viewer::EglCoreContext context;
-  viewer::OffscreenTarget target(size);
+  const gl::HeadlessContext context;
+  const gl::HeadlessContext::Binding current(context);
+  const gl::OffscreenTarget target(size, GL_RGBA8);
   target.bind();
   viewer::ViewerRenderer renderer(p.calib);
   for (auto _ : state) {
     renderer.draw(p.frame, size);
-    if (read_back) benchmark::DoNotOptimize(viewer::readFramebufferBgr(size).data);
+    if (read_back) benchmark::DoNotOptimize(gl::readFramebufferBgr(size).data);
     glFinish();
   }
   state.counters["fps"] = benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
-  state.SetLabel(viewer::currentGlDescription());
+  state.SetLabel(gl::currentGlDescription());
 }
 
 void BM_ViewerDraw(benchmark::State& state) { drawLoop(state, false); }
@@ -70,7 +71,7 @@ void BM_ViewerDrawInWindow(benchmark::State& state) {
     glFinish();
   }
   state.counters["fps"] = benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
-  state.SetLabel(viewer::currentGlDescription());
+  state.SetLabel(gl::currentGlDescription());
 }
 
 BENCHMARK(BM_ViewerDraw)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(2.0);

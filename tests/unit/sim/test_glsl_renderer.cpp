@@ -1,6 +1,6 @@
 // The GLSL renderer (headless EGL): same corner-accuracy acceptance as the
 // CPU renderer, agreement with it pixel by pixel, and its flip and effects
-// plumbing. Skipped where no headless EGL / OpenGL ES 3 context can be made.
+// plumbing. Skipped where no headless EGL / OpenGL 3.3 core context can be made.
 #include <gtest/gtest.h>
 
 #include <memory>

@@ -1,14 +1,15 @@
-#include "viewer/offscreen_target.hpp"
+#include "gl/offscreen_target.hpp"
 
-#include <opencv2/core.hpp>
+#include <cstdio>
 #include <stdexcept>
+#include <string>
 
-namespace onetip::viewer {
+namespace onetip::gl {
 
-OffscreenTarget::OffscreenTarget(cv::Size size) : size_(size) {
+OffscreenTarget::OffscreenTarget(cv::Size size, GLenum colour_format) : size_(size) {
   glGenRenderbuffers(1, &colour_);
   glBindRenderbuffer(GL_RENDERBUFFER, colour_);
-  glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, size.width, size.height);
+  glRenderbufferStorage(GL_RENDERBUFFER, colour_format, size.width, size.height);
   glGenRenderbuffers(1, &depth_);
   glBindRenderbuffer(GL_RENDERBUFFER, depth_);
   glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, size.width, size.height);
@@ -22,7 +23,10 @@ OffscreenTarget::OffscreenTarget(cv::Size size) : size_(size) {
     glDeleteFramebuffers(1, &fbo_);
     glDeleteRenderbuffers(1, &depth_);
     glDeleteRenderbuffers(1, &colour_);
-    throw std::runtime_error("viewer: offscreen framebuffer is incomplete");
+    char format[16];
+    std::snprintf(format, sizeof format, "0x%04X", colour_format);
+    throw std::runtime_error(std::string("OpenGL: offscreen framebuffer with colour format ") + format +
+                             " is incomplete");
   }
 }
 
@@ -43,4 +47,4 @@ cv::Mat readFramebufferBgr(cv::Size size) {
   return top_down;
 }
 
-}  // namespace onetip::viewer
+}  // namespace onetip::gl

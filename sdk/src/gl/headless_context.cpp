@@ -1,4 +1,4 @@
-#include "viewer/egl_core_context.hpp"
+#include "gl/headless_context.hpp"
 
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
@@ -7,9 +7,9 @@
 #include <cstring>
 #include <stdexcept>
 
-#include "viewer/gl_api.hpp"
+#include "gl/gl_api.hpp"
 
-namespace onetip::viewer {
+namespace onetip::gl {
 
 namespace {
 [[noreturn]] void fail(const char* step) {
@@ -19,7 +19,7 @@ namespace {
 }
 }  // namespace
 
-EglCoreContext::EglCoreContext() {
+HeadlessContext::HeadlessContext() {
   const auto get_platform_display =
       reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(eglGetProcAddress("eglGetPlatformDisplayEXT"));
   const char* client_extensions = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
@@ -35,15 +35,21 @@ EglCoreContext::EglCoreContext() {
   EGLContext context = eglCreateContext(display, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attributes);
   if (context == EGL_NO_CONTEXT) fail("eglCreateContext (OpenGL 3.3 core, no config)");
   context_ = context;
-  if (!eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, context)) {
-    eglDestroyContext(display, context);
-    fail("eglMakeCurrent");
-  }
 }
 
-EglCoreContext::~EglCoreContext() {
-  eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+HeadlessContext::~HeadlessContext() {
+  // The display stays initialised: EGL displays are per process, not
+  // reference-counted, so terminating it would break other contexts on it
+  // (and Mesa frees its driver state only then, which leak checkers report).
   eglDestroyContext(display_, context_);
+}
+
+HeadlessContext::Binding::Binding(const HeadlessContext& context) : context_(context) {
+  if (!eglMakeCurrent(context_.display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_.context_)) fail("eglMakeCurrent");
+}
+
+HeadlessContext::Binding::~Binding() {
+  eglMakeCurrent(context_.display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
 }
 
 std::string currentGlDescription() {
@@ -52,4 +58,4 @@ std::string currentGlDescription() {
   return std::string(renderer ? renderer : "?") + ", " + (version ? version : "?");
 }
 
-}  // namespace onetip::viewer
+}  // namespace onetip::gl
