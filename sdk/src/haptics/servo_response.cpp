@@ -40,7 +40,10 @@ const std::array<double, 3>& ServoResponse::advance(const std::array<double, 3>&
                          : clamped[i];
       time_to_control_s_ += control_period;
     }
-    for (size_t i = 0; i < 3; ++i) angle_[i] += std::clamp(target_[i] - angle_[i], -max_step, max_step);
+    for (size_t i = 0; i < 3; ++i) {
+      const double to_go = target_[i] - angle_[i];  // arrive exactly, not to within rounding
+      angle_[i] = std::abs(to_go) <= max_step ? target_[i] : angle_[i] + std::copysign(max_step, to_go);
+    }
     time_to_control_s_ -= kTickS;
   }
   return angle_;

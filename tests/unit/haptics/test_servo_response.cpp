@@ -18,7 +18,7 @@ TEST(ServoResponse, MovesSixtyDegreesInSeventyMilliseconds) {
   const std::array<double, 3> far{195, 195, 195};
   EXPECT_NEAR(servos.advance(far, 0.035)[0], 60.0, 1e-9);
   EXPECT_NEAR(servos.advance(far, 0.035)[1], 90.0, 1e-9);
-  EXPECT_NEAR(servos.advance(far, 1.0)[2], 195.0, 1e-9);  // and stops at the target
+  EXPECT_EQ(servos.advance(far, 1.0)[2], 195.0);  // and stops exactly at the target
 }
 
 TEST(ServoResponse, TakesANewTargetOnlyAtTheFiftyHertzControlInstants) {
@@ -40,7 +40,7 @@ TEST(ServoResponse, RoundsToTheResolutionAndClampsToTheTravel) {
   ServoResponseOptions exact;
   exact.resolution_deg = 0.0;
   ServoResponse unrounded(exact);
-  EXPECT_DOUBLE_EQ(unrounded.advance({100.3, 100.3, 100.3}, 1.0)[0], 100.3);
+  EXPECT_EQ(unrounded.advance({100.3, 100.3, 100.3}, 1.0)[0], 100.3);
 }
 
 TEST(ServoResponse, RefusesBadOptionsAndIntervals) {
