@@ -11,9 +11,13 @@ packages=(
   libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri libglfw3-dev libopengl-dev
   xvfb xauth xdotool  # the windowed viewer test: a virtual X display and synthetic input
   libnanoflann-dev libspnav-dev libevdev-dev libasound2-dev
+  libyaml-cpp-dev  # configuration files (pattern, options, scenarios) as plain YAML
   pybind11-dev python3-dev python3-numpy python3-matplotlib python3-pytest
   mono-mcs mono-runtime
   qemu-system-x86 linux-image-amd64 busybox-static cpio udev
+  cyclonedds-dev cyclonedds-tools  # the DDS link (sdk/src/dds, issue 19): Cyclone DDS and its IDL compiler
+  libfastrtps-dev fastddsgen iproute2 nftables  # DDS tests: the Fast DDS subscriber; network namespaces, dropped packets
+  clang libclang-rt-14-dev  # libFuzzer harnesses (tests/fuzz, issue 17)
 )
 
 missing=()

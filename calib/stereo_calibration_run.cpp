@@ -59,9 +59,8 @@ StereoCalibrationReport runStereoCalibration(const StereoCalibrationRun& run, st
     throw InputError("input '" + run.input + "': no readable frames");
   report.frames_used = static_cast<int>(pairs.size());
   if (pairs.empty())
-    throw InputError("the " + std::to_string(pattern.cols) + "x" +
-                     std::to_string(pattern.rows) +
-                     " board was not found in both views of any frame");
+    throw InputError("the " + std::to_string(pattern.rows) + " x " + std::to_string(pattern.cols) +
+                     " (rows x cols) board was not found in both views of any frame");
   log << "board found in both views of " << report.frames_used << " of "
       << report.frames_read + report.frames_unusable << " frames\n";
   report.result = vision::calibrateStereo(pairs, pattern, layout, run.solver);

@@ -2,7 +2,7 @@
 //
 // Position control with clutching: while the finger touches, the cube's pose
 // is its pose at contact onset followed by the finger's motion since then
-// (the 6-D input, CONVENTIONS.md: translation [dx, dy, -dz] in S scaled by
+// (the 6-D input, docs/reference.md: translation [dx, dy, -dz] in S scaled by
 // `gain_mm` and rotation R = Rz(yaw) * Ry(roll) * Rx(pitch)); lifting the
 // finger leaves the cube where it is, and the next touch continues from there.
 // At each contact end the cube is drawn as ASCII (a view along -z of S, x to the

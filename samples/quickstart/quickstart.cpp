@@ -13,6 +13,10 @@ int main(int argc, char** argv) {
     int inputs = 0;
     sensor.onEvent([&](const onetip::Event& e) {  // runs on the sensor's processing thread
       if (e.type == onetip::EventType::input) ++inputs;
+      if (e.type == onetip::EventType::error) {  // e.g. a press past the working range: says what happened
+        std::printf("frame %3lld error         %s\n", static_cast<long long>(e.frame), e.message.c_str());
+        return;
+      }
       const onetip::Input6& v = e.input;
       std::printf("frame %3lld %-13s dx %6.2f dy %6.2f dz %6.2f mm  yaw %6.1f pitch %6.1f roll %6.1f deg\n",
                   static_cast<long long>(e.frame), std::string(toString(e.type)).c_str(), v.dx, v.dy, v.dz, v.yaw,

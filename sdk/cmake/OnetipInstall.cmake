@@ -1,5 +1,7 @@
 # Installs the public library, headers, the CMake package (find_package(onetip)
-# gives onetip::onetip) and a pkg-config file.
+# gives onetip::onetip), a relocatable pkg-config file, the user reference and
+# the shipped scenarios (share/onetip). The Python module and Onetip.dll are
+# installed by bindings/python and bindings/csharp.
 include(CMakePackageConfigHelpers)
 
 install(TARGETS onetip EXPORT onetipTargets
@@ -18,5 +20,13 @@ file(WRITE ${PROJECT_BINARY_DIR}/onetipConfig.cmake
 install(FILES ${PROJECT_BINARY_DIR}/onetipConfig.cmake ${PROJECT_BINARY_DIR}/onetipConfigVersion.cmake
   DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/onetip)
 
+# onetip.pc names its prefix relative to its own folder (${pcfiledir}), so the
+# installed tree can be moved or installed anywhere with --prefix.
+file(RELATIVE_PATH ONETIP_PC_PREFIX_FROM_PCDIR /p/${CMAKE_INSTALL_LIBDIR}/pkgconfig /p)
+string(REGEX REPLACE "/$" "" ONETIP_PC_PREFIX_FROM_PCDIR "${ONETIP_PC_PREFIX_FROM_PCDIR}")
 configure_file(${PROJECT_SOURCE_DIR}/sdk/cmake/onetip.pc.in ${PROJECT_BINARY_DIR}/onetip.pc @ONLY)
 install(FILES ${PROJECT_BINARY_DIR}/onetip.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig)
+
+install(FILES ${PROJECT_SOURCE_DIR}/docs/reference.md DESTINATION ${CMAKE_INSTALL_DATADIR}/onetip/docs)
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/samples/scenarios DESTINATION ${CMAKE_INSTALL_DATADIR}/onetip
+  FILES_MATCHING PATTERN "*.yaml")

@@ -1,5 +1,5 @@
 // `onetip calibrate --pattern BOARD.yaml --input FRAMES --out C.yaml
-//  [--split-x N] [--flip-left] [--flip-right]` (CONVENTIONS.md): stereo
+//  [--split-x N] [--flip-left] [--flip-right]` (docs/reference.md): stereo
 // calibration of the two virtual cameras; the RMS reprojection error in
 // pixels is the last line printed.
 #include <iomanip>
@@ -8,11 +8,13 @@
 #include "calib/stereo_calibration_run.hpp"
 #include "command.hpp"
 #include "core/error.hpp"
+#include "output_paths.hpp"
 
 namespace onetip::tools {
 namespace {
 
 int runCalibrate(const Args& args) {
+  refuseOutputClashes(args, {"out"}, {"pattern", "input"});
   calib::StereoCalibrationRun run;
   run.pattern_path = args.get("pattern");
   run.input = args.get("input");

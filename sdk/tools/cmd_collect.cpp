@@ -1,10 +1,9 @@
 // `onetip collect`: records a haptic renderer dataset with the sensor inside
 // the display (calib/haptic_collection.hpp), here the simulated display with a
-// simulated sensor. A progress bar with an ETA goes to stderr; Ctrl-C (SIGINT)
+// simulated sensor. A progress bar with an ETA goes to stderr; Ctrl-C (SIGINT, or SIGTERM)
 // stops after the current row, and running the same command again resumes from
 // the progress file. Exit status: 0 complete (dataset written), 1 stopped
 // before the end (SIGINT or --max-rows; resumable), 2 bad input.
-#include <csignal>
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -14,13 +13,11 @@
 #include "core/error.hpp"
 #include "haptics/biotac_like_sensor.hpp"
 #include "haptics/onetip_contact_sensor.hpp"
+#include "interrupt.hpp"
+#include "output_paths.hpp"
 
 namespace onetip::tools {
 namespace {
-
-std::atomic<bool> g_stop{false};
-static_assert(std::atomic<bool>::is_always_lock_free);
-void onInterrupt(int) { g_stop.store(true); }  // internal linkage: other commands have their own
 
 std::unique_ptr<haptics::TactileSensorModel> makeSensor(const std::string& name, double noise) {
   if (name == "biotac") {
@@ -34,6 +31,7 @@ std::unique_ptr<haptics::TactileSensorModel> makeSensor(const std::string& name,
 }
 
 int runCollect(const Args& args) {
+  refuseOutputClashes(args, {"out", "progress-file"}, {});
   calib::CollectionOptions options;
   options.step_deg = args.getDouble("step", 3.0);
   options.out_path = args.get("out");
@@ -54,16 +52,11 @@ int runCollect(const Args& args) {
     last_drawn = p.elapsed_s;
     std::fprintf(stderr, "\r%s", calib::formatProgressBar(p).c_str());
   };
-  g_stop.store(false);
-  const auto previous = std::signal(SIGINT, onInterrupt);
   calib::CollectionResult result;
-  try {
-    result = calib::collectDataset(rig, options, &g_stop, draw);
-  } catch (...) {
-    std::signal(SIGINT, previous);
-    throw;
+  {
+    const InterruptHandlers handlers;  // SIGINT/SIGTERM: stop after the current row, resumable
+    result = calib::collectDataset(rig, options, interruptFlag(), draw);
   }
-  std::signal(SIGINT, previous);
   if (!quiet && last_drawn >= 0.0) std::fprintf(stderr, "\r%s\n", calib::formatProgressBar(last).c_str());
   if (result.status == calib::CollectionResult::Status::interrupted) {
     std::cerr << "onetip collect: stopped at " << result.rows << "/" << result.total << " rows ("
@@ -78,7 +71,7 @@ const CommandRegistrar kCollect{Command{
     "collect",
     "record a haptic dataset: sweep the display's motor grid with the sensor inside it (resumable)",
     {{"out", "dataset to write: .csv (m1,m2,m3,s1,...,sN) or .bin (binary)", false, true},
-     {"step", "grid step in degrees, (0, 165] (default 3: 55^3 = 166,375 configurations)", false, false},
+     {"step", "grid step in degrees, [1.65, 165] (default 3: 55^3 = 166,375 configurations; at most 100^3)", false, false},
      {"sensor", "simulated sensor: biotac (20 channels, default) or onetip (5 x 5 marker displacements)", false,
       false},
      {"noise", "biotac sensor noise, counts (default 0: deterministic, resumes reproduce exactly)", false, false},

@@ -2,6 +2,7 @@
 // through the simulator, runs the SDK on every rendered frame, prints the
 // SDK's 6-D estimate beside the simulator's truth as it goes, and writes
 // est_pose.csv, the ground truth and a contact sheet of what the camera saw.
+// Ctrl-C or SIGTERM stops after the current frame and writes the frames done.
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -11,6 +12,7 @@
 #include "contact_sheet.hpp"
 #include "core/csv_table.hpp"
 #include "core/error.hpp"
+#include "interrupt.hpp"
 #include "pipeline/frame_processor.hpp"
 #include "sim/simulator.hpp"
 
@@ -37,7 +39,8 @@ int runDemo(const Args& args) {
   double sq[6] = {0, 0, 0, 0, 0, 0};
   int both = 0;
   std::printf("%5s  %-44s | %-44s\n", "frame", "SDK estimate", "simulator truth");
-  while (!sim.done()) {
+  const InterruptHandlers handlers;  // SIGINT/SIGTERM: the frames done so far are written whole
+  while (!sim.done() && !interruptRequested()) {
     const sim::GroundTruthFrame& f = sim.next();
     const cv::Mat frame = sim.render();
     const pipeline::FrameResult r = processor.process(frame, f.t);
@@ -74,8 +77,9 @@ int runDemo(const Args& args) {
     for (int i = 0; i < 6; ++i) std::printf(" %s %.3f%s", names[i], std::sqrt(sq[i] / both), i < 3 ? " mm" : " deg");
     std::printf("\n");
   }
-  std::cout << "wrote " << sheet_path << ", est_pose.csv and gt_pose.csv in " << out.string() << "\n";
-  return 0;
+  std::cout << (interruptRequested() ? "interrupted: " : "") << "wrote " << sheet_path
+            << ", est_pose.csv and gt_pose.csv in " << out.string() << "\n";
+  return interruptRequested() ? kInterruptedExit : 0;
 }
 
 const CommandRegistrar reg{{

@@ -1,16 +1,19 @@
 // `onetip process`: the sensing pipeline over a frame source, writing pose.csv
-// (and markers.csv, timing.csv) per CONVENTIONS.md.
+// (and markers.csv, timing.csv) per docs/reference.md.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <iostream>
-#include <opencv2/imgcodecs.hpp>
 
+#include "capture/image_file.hpp"
 #include "capture/open_frame_source.hpp"
 #include "command.hpp"
 #include "core/csv_table.hpp"
 #include "core/error.hpp"
+#include "interrupt.hpp"
+#include "output_paths.hpp"
 #include "pipeline/frame_processor.hpp"
+#include "pipeline/open_pipeline.hpp"
 
 namespace onetip::tools {
 namespace {
@@ -26,14 +29,16 @@ std::vector<std::string> poseRow(std::int64_t frame, const pipeline::FrameResult
 }
 
 int runProcess(const Args& args) {
-  const StereoCalibration calib = loadCalibration(args.get("calib"));
-  const MarkerPattern pattern = loadPattern(args.get("pattern"));
+  refuseOutputClashes(args, {"out", "markers", "timing"}, {"calib", "pattern", "reference", "input"});
+  const std::string calib_file = args.optional("calib").value_or("");
+  const std::string pattern_file = args.optional("pattern").value_or("");
+  pipeline::checkRigFiles(calib_file, pattern_file);
   auto source = capture::openFrameSource(args.get("input"));
+  const auto [calib, pattern] = pipeline::loadRig(calib_file, pattern_file, *source, args.get("input"));
   pipeline::FrameProcessor processor(calib, pattern);
 
   if (auto ref = args.optional("reference")) {
-    const cv::Mat img = cv::imread(*ref, cv::IMREAD_GRAYSCALE);
-    if (img.empty()) throw InputError("--reference " + *ref + ": not a readable image");
+    const cv::Mat img = capture::loadGreyImage(*ref, {calib.image_width, calib.image_height});
     const pipeline::FrameResult r = processor.setReference(img);
     if (r.status != pipeline::FrameStatus::reference) throw InputError("--reference " + *ref + ": " + r.message);
   }
@@ -46,7 +51,9 @@ int runProcess(const Args& args) {
   int processed = 0, skipped = 0, lost = 0, errors = 0, consecutive_errors = 0;
   std::vector<double> process_ms;
   const bool quiet = args.has("quiet");
-  for (;;) {
+  // Ctrl-C or SIGTERM ends the stream: the frames done so far are written (a live camera ends only this way).
+  const InterruptHandlers handlers;
+  while (!interruptRequested()) {
     const auto t0 = Clock::now();
     capture::Frame frame = source->next();
     const double decode_ms = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
@@ -96,22 +103,29 @@ int runProcess(const Args& args) {
                   v.dx, v.dy, v.dz, v.yaw, v.pitch, v.roll, r.markers.validCount(), pattern.count());
     }
   }
-  if (processed == 0) throw InputError(args.get("input") + ": no usable frame");
+  if (processed == 0) {
+    if (interruptRequested()) {
+      std::fprintf(stderr, "onetip process: interrupted before any frame was processed; nothing written\n");
+      return kInterruptedExit;
+    }
+    throw InputError(args.get("input") + ": no usable frame");
+  }
   pose.commit();
   if (markers) markers->commit();
   if (timing) timing->commit();
   std::nth_element(process_ms.begin(), process_ms.begin() + static_cast<long>(process_ms.size() / 2), process_ms.end());
-  std::printf("processed %d frames (%d skipped, %d lost, %d source errors); median processing %.2f ms per frame\n",
-              processed, skipped, lost, errors, process_ms[process_ms.size() / 2]);
-  return 0;
+  std::printf("%s %d frames (%d skipped, %d lost, %d source errors); median processing %.2f ms per frame\n",
+              interruptRequested() ? "interrupted: wrote the" : "processed", processed, skipped, lost, errors,
+              process_ms[process_ms.size() / 2]);
+  return interruptRequested() ? kInterruptedExit : 0;
 }
 
 const CommandRegistrar reg{{
     "process",
     "Run the sensing pipeline over a frame source and write the 6-D pose per frame (pose.csv), optionally the 3-D "
     "markers (S, mm) and per-stage timings.",
-    {{"calib", "calibration file (CONVENTIONS.md)", false, true},
-     {"pattern", "marker pattern file", false, true},
+    {{"calib", "calibration file (docs/reference.md); optional for sim: sources", false, false},
+     {"pattern", "marker pattern file; optional for sim: sources", false, false},
      {"input", "frames: a folder of PNGs, a video file, v4l2:/dev/videoN or sim:SCENARIO.yaml", false, true},
      {"out", "pose.csv to write: frame,contact,state,dx,dy,dz,yaw,pitch,roll", false, true},
      {"markers", "markers.csv to write: frame,id,x,y,z (S, mm)", false, false},

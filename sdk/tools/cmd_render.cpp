@@ -1,5 +1,5 @@
 // `onetip render`: the kNN tactile renderer over a file of sensed vectors
-// (CONVENTIONS.md, "Haptic rendering"). Writes m1,m2,m3 per query; with
+// (docs/reference.md, "Haptic rendering"). Writes m1,m2,m3 per query; with
 // --timing, `what,ms` rows load, build and query (median per query).
 #include <algorithm>
 #include <chrono>
@@ -9,6 +9,7 @@
 #include "core/error.hpp"
 #include "haptics/knn_renderer.hpp"
 #include "haptics/tactile_dataset.hpp"
+#include "output_paths.hpp"
 
 namespace onetip::tools {
 namespace {
@@ -19,6 +20,7 @@ double msSince(Clock::time_point t0) {
 }
 
 int runRender(const Args& args) {
+  refuseOutputClashes(args, {"out", "timing"}, {"dataset", "queries"});
   const int k = args.getInt("neighbors", 1);
   if (k < 1) throw InputError("option '--neighbors': must be at least 1");
   const std::string out_path = args.get("out");

@@ -1,5 +1,5 @@
 // `onetip servo --port TTY --angles A1,A2,A3 [--channels 0,1,2] [--baud B]`
-// (CONVENTIONS.md): one target per servo to a Pololu Maestro (compact
+// (docs/reference.md): one target per servo to a Pololu Maestro (compact
 // protocol), clamped to the platform's safe range [30, 195] deg, then exit.
 #include <iostream>
 #include <sstream>
@@ -18,11 +18,10 @@ std::array<double, 3> parseTriple(const std::string& text, const std::string& op
   std::string cell;
   size_t n = 0;
   while (std::getline(in, cell, ',')) {
-    if (n == 3) break;
-    values[n] = parseNumber(cell, "option '--" + option + "' value " + std::to_string(n + 1));
-    ++n;
+    if (n < 3) values[n] = parseNumber(cell, "option '--" + option + "' value " + std::to_string(n + 1));
+    ++n;  // every cell counts: a fourth value is an error, never silently dropped
   }
-  if (n != 3 || !in.eof() || text.empty() || text.back() == ',')
+  if (n != 3 || text.empty() || text.back() == ',')
     throw InputError("option '--" + option + "': needs exactly three comma-separated numbers, got '" + text + "'");
   return values;
 }

@@ -5,12 +5,17 @@
 #include "command.hpp"
 #include "contact_sheet.hpp"
 #include "core/error.hpp"
+#include "interrupt.hpp"
+#include "output_paths.hpp"
 #include "sim/ground_truth_writer.hpp"
 
 namespace onetip::tools {
 namespace {
 
+struct Interrupted {};  // thrown from the per-frame callback to unwind the writer (its staging folder goes)
+
 int runSim(const Args& args) {
+  refuseOutputClashes(args, {"out", "contact-sheet"}, {"scenario"});
   sim::Scenario scenario = sim::loadScenario(args.get("scenario"));
   sim::SimulatorOptions options;
   options.frames = args.getInt("frames", 0);
@@ -23,6 +28,7 @@ int runSim(const Args& args) {
   ContactSheet sheet(simulator.frameCount());
   const bool quiet = args.has("quiet");
   write.on_frame = [&](const sim::GroundTruthFrame& f, int n) {
+    if (interruptRequested()) throw Interrupted{};
     if (sheet_path && sheet.wants(f.index)) {
       char line[160];
       std::snprintf(line, sizeof line, "truth dx %.2f dy %.2f dz %.2f  yaw %.1f pitch %.1f roll %.1f", f.input.dx,
@@ -36,7 +42,15 @@ int runSim(const Args& args) {
                 f.index + 1, n, f.in_contact ? 1 : 0, std::string(toString(f.in_contact ? f.state : ContactState::none)).c_str(),
                 f.input.dx, f.input.dy, f.input.dz, f.input.yaw, f.input.pitch, f.input.roll);
   };
-  sim::writeSimulation(simulator, args.get("out"), write);
+  {
+    const InterruptHandlers handlers;  // SIGINT/SIGTERM: nothing is written, the staging folder is removed
+    try {
+      sim::writeSimulation(simulator, args.get("out"), write);
+    } catch (const Interrupted&) {
+      std::fprintf(stderr, "onetip sim: interrupted; nothing written\n");
+      return kInterruptedExit;
+    }
+  }
   if (sheet_path) sheet.save(*sheet_path);
   std::cout << "wrote " << simulator.frameCount() << " frames to " << args.get("out") << "\n";
   return 0;
@@ -47,7 +61,7 @@ const CommandRegistrar reg{{
     "Simulate the sensor (digital twin): play a scenario, write frames/ and the ground truth "
     "(gt_pose.csv, gt_markers.csv, calib.yaml, pattern.yaml).",
     {{"scenario", "scenario YAML file (samples/scenarios/*.yaml)", false, true},
-     {"out", "output folder (created; replaced only if it is an earlier simulator output)", false, true},
+     {"out", "output folder to create (absent or empty; nothing else is ever deleted or replaced)", false, true},
      {"frames", "number of frames spread over the scenario (default: duration x fps + 1)", false, false},
      {"seed", "random seed for image noise and random poses (default: the scenario's)", false, false},
      {"field-only", "write only the ground truth, no rendered frames (fast)", true, false},

@@ -6,6 +6,8 @@
 
 #include "command.hpp"
 #include "core/error.hpp"
+#include "interrupt.hpp"
+#include "output_paths.hpp"
 #include "viewer/viewer_session.hpp"
 
 namespace onetip::tools {
@@ -20,6 +22,7 @@ cv::Size parseSize(const std::string& text) {
 }
 
 int runView(const Args& args) {
+  refuseOutputClashes(args, {"screenshot", "record", "pose-out"}, {"input", "calib", "pattern"});
   viewer::ViewerOptions o;
   o.input = args.get("input");
   o.calib = args.optional("calib").value_or("");
@@ -31,13 +34,15 @@ int runView(const Args& args) {
   o.headless = args.has("headless");
   o.windowed = args.has("windowed");
   if (auto s = args.optional("size")) o.window = parseSize(*s);
+  const InterruptHandlers handlers;  // SIGINT/SIGTERM: stop after the current frame, finish the outputs
+  o.stop = interruptFlag();
   const viewer::ViewerReport r = viewer::runViewer(o);
   std::printf("drew %d frames %s on %s: %.1f frames/s overall; median per frame: source %.2f ms, pipeline %.2f ms, "
               "draw %.2f ms, read-back %.2f ms, present %.2f ms\n",
               r.drawn, r.headless ? "headless" : "in a window", r.gl.c_str(), r.loop_fps, r.median_source_ms,
               r.median_process_ms, r.median_draw_ms, r.median_readback_ms, r.median_present_ms);
   if (!o.screenshot.empty()) std::printf("screenshot: %s\n", o.screenshot.c_str());
-  return 0;
+  return interruptRequested() ? kInterruptedExit : 0;
 }
 
 const CommandRegistrar reg{{

@@ -1,46 +1,16 @@
 #include "pipeline_command.hpp"
 
-#include <csignal>
 #include <cstdio>
 
+#include "interrupt.hpp"
 #include "pipeline/open_pipeline.hpp"
 #include "pipeline/options_io.hpp"
 
 namespace onetip::tools {
-namespace {
-
-volatile std::sig_atomic_t g_interrupted = 0;
-extern "C" void onInterrupt(int) { g_interrupted = 1; }
-
-// Installs the SIGINT/SIGTERM handlers and restores the previous ones on exit.
-class InterruptHandlers {
- public:
-  InterruptHandlers() {
-    g_interrupted = 0;
-    struct sigaction sa {};
-    sa.sa_handler = onInterrupt;
-    sigemptyset(&sa.sa_mask);
-    sigaction(SIGINT, &sa, &old_int_);
-    sigaction(SIGTERM, &sa, &old_term_);
-  }
-  ~InterruptHandlers() {
-    sigaction(SIGINT, &old_int_, nullptr);
-    sigaction(SIGTERM, &old_term_, nullptr);
-  }
-  InterruptHandlers(const InterruptHandlers&) = delete;
-  InterruptHandlers& operator=(const InterruptHandlers&) = delete;
-
- private:
-  struct sigaction old_int_ {}, old_term_ {};
-};
-
-}  // namespace
-
-bool interruptRequested() noexcept { return g_interrupted != 0; }
 
 std::vector<OptionSpec> pipelineInputOptions() {
   return {{"input", "frames: a folder of images, a video file, v4l2:/dev/videoN or sim:SCENARIO.yaml", false, true},
-          {"calib", "calibration file (CONVENTIONS.md); optional for sim: sources", false, false},
+          {"calib", "calibration file (docs/reference.md); optional for sim: sources", false, false},
           {"pattern", "marker pattern file; optional for sim: sources", false, false},
           {"reference", "rest-state image (default: the first frame)", false, false},
           {"options", "pipeline options file (YAML, keys of onetip/sensor_options.hpp)", false, false}};
@@ -56,7 +26,7 @@ std::unique_ptr<pipeline::Pipeline> openPipelineFromArgs(const Args& args) {
 
 int runPipelineUntilInterrupted(pipeline::Pipeline& p, const std::function<bool()>& ready) {
   InterruptHandlers handlers;
-  if (ready && !ready()) return interruptRequested() ? 130 : 0;
+  if (ready && !ready()) return interruptRequested() ? kInterruptedExit : 0;
   p.start();
   while (!interruptRequested() && !p.waitFinished(0.05)) {
   }
@@ -66,7 +36,7 @@ int runPipelineUntilInterrupted(pipeline::Pipeline& p, const std::function<bool(
                interruptRequested() ? "interrupted" : "source ended", static_cast<long long>(s.frames_processed),
                static_cast<long long>(s.frames_dropped), static_cast<long long>(s.frames_lost),
                static_cast<long long>(s.source_errors));
-  return interruptRequested() ? 130 : 0;
+  return interruptRequested() ? kInterruptedExit : 0;
 }
 
 }  // namespace onetip::tools

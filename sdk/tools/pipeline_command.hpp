@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "command.hpp"
+#include "interrupt.hpp"
 #include "pipeline/pipeline.hpp"
 
 namespace onetip::tools {
@@ -26,7 +27,5 @@ std::unique_ptr<pipeline::Pipeline> openPipelineFromArgs(const Args& args);
 // without starting. Prints a one-line summary to stderr. Returns 0, or 130
 // after an interrupt.
 int runPipelineUntilInterrupted(pipeline::Pipeline& p, const std::function<bool()>& ready = {});
-// True once SIGINT or SIGTERM arrived during runPipelineUntilInterrupted().
-bool interruptRequested() noexcept;
 
 }  // namespace onetip::tools

@@ -1,6 +1,6 @@
 // CliReference: the C++ pipeline's answer for a scenario, read from the
 // pose.csv (frame,contact,state,dx,dy,dz,yaw,pitch,roll) and markers.csv
-// (frame,id,x,y,z) that `onetip process` wrote (CONVENTIONS.md).
+// (frame,id,x,y,z) that `onetip process` wrote (docs/reference.md).
 using System;
 using System.Collections.Generic;
 using System.Globalization;

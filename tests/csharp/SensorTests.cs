@@ -76,6 +76,8 @@ namespace Onetip.Tests
                 Check.That(e.Message.Contains("working range") && reference.Pose[e.Frame][2] > options.WorkingRange[2],
                            "an error event only where the reference's dz leaves the working range: frame " + e.Frame +
                            ": " + e.Message);
+            foreach (var e in errors)
+                Check.That(e.ToString() == "Error frame " + e.Frame + ": " + e.Message, "ToString() shows the message: " + e);
             Check.That(inputs.Select(e => e.Frame).SequenceEqual(contact), "an input event for every contact frame of the reference");
             foreach (var e in inputs)
                 CompareInput(e.Input, reference.Pose[e.Frame], "input event of frame " + e.Frame);

@@ -1,5 +1,5 @@
 // UnityAxes against an independent construction: the rotation matrix
-// R_S = Rz(yaw) Ry(roll) Rx(pitch) of CONVENTIONS.md, carried into Unity's
+// R_S = Rz(yaw) Ry(roll) Rx(pitch) of docs/reference.md, carried into Unity's
 // axes by the reflection M that swaps y and z (R_unity = M R_S M), must turn
 // vectors exactly as the quaternion UnityAxes.Rotation returns.
 using System;

@@ -4,6 +4,7 @@
 # "sim:SCENARIO", using the simulator's exact calibration and pattern (from
 # `onetip sim --field-only`, which writes them without rendering).
 file(REMOVE_RECURSE ${OUT}/sim)
+file(MAKE_DIRECTORY ${OUT})  # `onetip sim --out` creates only the last folder
 execute_process(COMMAND ${CLI} sim --scenario ${SCENARIO} --out ${OUT}/sim --field-only --frames 1 --quiet
                 RESULT_VARIABLE status)
 if(NOT status EQUAL 0)

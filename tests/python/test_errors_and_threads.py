@@ -32,6 +32,27 @@ def test_bad_options_name_the_field(press_scenario):
         onetip.SensorOptions(no_such_field=1)
 
 
+def test_bad_options_are_refused_at_construction():
+    with pytest.raises(onetip.InputError, match="queue_capacity"):
+        onetip.SensorOptions(queue_capacity=-3)
+    with pytest.raises(onetip.InputError, match="beta"):
+        onetip.SensorOptions(filter_beta=float("nan"))
+
+
+def test_paths_may_be_pathlib_paths(tmp_path, press_scenario):
+    import pathlib
+    scenario = pathlib.Path(press_scenario)
+    options = onetip.SensorOptions(queue_capacity=5)
+    options.save(tmp_path / "options.yaml")
+    assert onetip.SensorOptions.load(tmp_path / "options.yaml").queue_capacity == 5
+    simulated = onetip.SimulatedSensor(scenario, render=False, frames=2)
+    simulated.save_calibration(tmp_path / "calib.yaml", tmp_path / "pattern.yaml")
+    assert (tmp_path / "calib.yaml").is_file() and (tmp_path / "pattern.yaml").is_file()
+    with onetip.Sensor(pathlib.Path(f"sim:{scenario}"), calibration=tmp_path / "calib.yaml",
+                       pattern=tmp_path / "pattern.yaml") as sensor:
+        assert sensor.source == f"sim:{scenario}"
+
+
 def test_options_round_trip_through_yaml(tmp_path):
     options = onetip.SensorOptions(lossless=True, queue_capacity=7, gain=[1, 2, 3, 4, 5, 6],
                                    filter=onetip.FilterKind.one_euro, press_mm=2.5)

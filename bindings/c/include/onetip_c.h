@@ -1,7 +1,7 @@
 /* onetip_c.h — the C ABI of the onetip SDK (in libonetip.so), for C, C#/Unity
  * (P/Invoke) and any language with a C FFI.
  *
- * Frames and units (CONVENTIONS.md): positions in millimetres in the sensor
+ * Frames and units (docs/reference.md): positions in millimetres in the sensor
  * frame S (origin at the rest-state marker centroid, z out of the pad towards
  * the finger, x along increasing marker column, y = z x x); angles in degrees;
  * the 6-D input is [dx, dy, dz, yaw, pitch, roll], the finger's motion since
@@ -27,7 +27,10 @@
  * Threads: every function may be called from any thread. Callbacks run on the
  * sensor's processing thread, one at a time, in frame order; inside one you may
  * poll, read stats, rezero and rereference, but onetip_sensor_start/stop/destroy
- * of the same sensor fail with ONETIP_ERROR_STATE there. The event and frame
+ * and onetip_sensor_wait_finished/wait_event of the same sensor fail with
+ * ONETIP_ERROR_STATE there (they would wait for themselves), and so do
+ * stop/destroy of another sensor while that sensor's own callback is running
+ * (two callbacks stopping each other would wait forever). The event and frame
  * pointers given to a callback are valid only during the call. Replacing a
  * callback (or setting NULL) waits for a call in progress to finish, so once
  * onetip_sensor_set_*_callback returns the old callback is never called again.
@@ -204,7 +207,7 @@ ONETIP_C_API int32_t onetip_options_save(uint32_t abi_version, const onetip_opti
                                          onetip_error* error);
 
 /* Opens `source` ("v4l2:/dev/videoN", a folder, a video file or "sim:SCENARIO.yaml").
- * calibration / pattern: files (CONVENTIONS.md); NULL or "" for "sim:" sources uses
+ * calibration / pattern: files (docs/reference.md); NULL or "" for "sim:" sources uses
  * the simulator's exact ones. reference: rest-state image or NULL/"" (first frame).
  * options: NULL for the defaults. Does not start. */
 ONETIP_C_API int32_t onetip_sensor_create(uint32_t abi_version, const char* source, const char* calibration,
@@ -219,7 +222,8 @@ ONETIP_C_API int32_t onetip_sensor_stop(onetip_sensor* sensor, onetip_error* err
 /* *out = 1 while running / once the source ended and every frame was processed. */
 ONETIP_C_API int32_t onetip_sensor_is_running(onetip_sensor* sensor, int32_t* out, onetip_error* error);
 ONETIP_C_API int32_t onetip_sensor_is_finished(onetip_sensor* sensor, int32_t* out, onetip_error* error);
-/* Waits up to timeout_s (< 0: no limit) for the end; *finished = 1 if it ended. */
+/* Waits up to timeout_s for the end; *finished = 1 if it ended. Time-outs here and in
+ * onetip_sensor_wait_event: < 0, INFINITY or >= 1e9 s mean no limit; NaN is ONETIP_ERROR_INPUT. */
 ONETIP_C_API int32_t onetip_sensor_wait_finished(onetip_sensor* sensor, double timeout_s, int32_t* finished,
                                                  onetip_error* error);
 
@@ -232,7 +236,8 @@ ONETIP_C_API int32_t onetip_sensor_set_frame_callback(onetip_sensor* sensor, one
 /* Non-blocking: *got = 1 and *out filled when an event was queued, else *got = 0. */
 ONETIP_C_API int32_t onetip_sensor_poll_event(onetip_sensor* sensor, onetip_event* out, int32_t* got,
                                               onetip_error* error);
-/* Blocks up to timeout_s seconds (does not block once the sensor finished or stopped and the queue is empty). */
+/* Blocks up to timeout_s seconds (see wait_finished for the limits; does not block once the sensor
+ * finished or stopped and the queue is empty). */
 ONETIP_C_API int32_t onetip_sensor_wait_event(onetip_sensor* sensor, double timeout_s, onetip_event* out,
                                               int32_t* got, onetip_error* error);
 /* Non-blocking per-frame result. markers may be NULL (capacity 0): then only *marker_count

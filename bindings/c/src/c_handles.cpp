@@ -67,10 +67,15 @@ std::shared_ptr<CSensor> unregisterSensor(onetip_sensor* handle) {
   return s;
 }
 
-CallbackScope::CallbackScope(const CSensor* sensor) noexcept : previous_(current_callback_sensor) {
+CallbackScope::CallbackScope(CSensor* sensor) noexcept : sensor_(sensor), previous_(current_callback_sensor) {
+  sensor_->callbacks_running.fetch_add(1);
   current_callback_sensor = sensor;
 }
-CallbackScope::~CallbackScope() { current_callback_sensor = previous_; }
+CallbackScope::~CallbackScope() {
+  current_callback_sensor = previous_;
+  sensor_->callbacks_running.fetch_sub(1);
+}
 bool CallbackScope::inside(const CSensor* sensor) noexcept { return current_callback_sensor == sensor; }
+const CSensor* CallbackScope::current() noexcept { return current_callback_sensor; }
 
 }  // namespace onetip::c_api

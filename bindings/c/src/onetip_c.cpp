@@ -31,6 +31,31 @@ void refuseInsideCallback(const CSensor& s, const char* call) {
     throw CError(ONETIP_ERROR_STATE, std::string(call) + ": called from inside the sensor's own callback");
 }
 
+// stop/destroy wait for the sensor's processing thread, hence for its running callback.
+void refuseStopFromCallback(const CSensor& s, const char* call) {
+  refuseInsideCallback(s, call);
+  if (CallbackScope::current() && s.callbacks_running.load() > 0)
+    throw CError(ONETIP_ERROR_STATE, std::string(call) +
+                                         ": called from another sensor's callback while this sensor's callback is "
+                                         "running (the two would wait on each other)");
+}
+
+// Time-outs in seconds: NaN is an input error; < 0, INFINITY and anything from
+// kNoLimitS up (beyond what a clock can add) mean no limit, returned as -1.
+constexpr double kNoLimitS = 1e9;
+double waitTimeout(double timeout_s, const char* call) {
+  if (std::isnan(timeout_s)) throw Error(ErrorKind::input, std::string(call) + ": timeout_s is NaN");
+  return timeout_s < 0 || timeout_s >= kNoLimitS ? -1.0 : timeout_s;
+}
+
+// Sensor::waitEvent without a limit: hour-long slices until an event, the end or a stop.
+bool waitEventWithoutLimit(Sensor& sensor, Event& e) {
+  for (;;) {
+    if (sensor.waitEvent(e, 3600.0)) return true;
+    if (!sensor.running()) return sensor.pollEvent(e);
+  }
+}
+
 }  // namespace
 
 extern "C" {
@@ -97,6 +122,7 @@ ONETIP_C_API int32_t onetip_sensor_create(uint32_t abi_version, const char* sour
 ONETIP_C_API int32_t onetip_sensor_destroy(onetip_sensor* sensor, onetip_error* error) {
   return boundary(error, [&] {
     if (!sensor) return;
+    refuseStopFromCallback(*lookupSensor(sensor), "onetip_sensor_destroy");
     std::shared_ptr<CSensor> s = unregisterSensor(sensor);
     s->sensor.stop();
   });
@@ -113,7 +139,7 @@ ONETIP_C_API int32_t onetip_sensor_start(onetip_sensor* sensor, onetip_error* er
 ONETIP_C_API int32_t onetip_sensor_stop(onetip_sensor* sensor, onetip_error* error) {
   return boundary(error, [&] {
     const auto s = lookupSensor(sensor);
-    refuseInsideCallback(*s, "onetip_sensor_stop");
+    refuseStopFromCallback(*s, "onetip_sensor_stop");
     s->sensor.stop();
   });
 }
@@ -138,8 +164,8 @@ ONETIP_C_API int32_t onetip_sensor_wait_finished(onetip_sensor* sensor, double t
     requireNonNull(finished, "onetip_sensor_wait_finished: finished");
     *finished = 0;
     const auto s = lookupSensor(sensor);
-    if (std::isnan(timeout_s)) throw Error(ErrorKind::input, "onetip_sensor_wait_finished: timeout_s is NaN");
-    *finished = s->sensor.waitFinished(timeout_s) ? 1 : 0;
+    refuseInsideCallback(*s, "onetip_sensor_wait_finished");
+    *finished = s->sensor.waitFinished(waitTimeout(timeout_s, "onetip_sensor_wait_finished")) ? 1 : 0;
   });
 }
 
@@ -148,7 +174,7 @@ ONETIP_C_API int32_t onetip_sensor_set_event_callback(onetip_sensor* sensor, one
   return boundary(error, [&] {
     const auto s = lookupSensor(sensor);
     if (!callback) return s->sensor.onEvent({});
-    const CSensor* owner = s.get();
+    CSensor* owner = s.get();
     s->sensor.onEvent([callback, user, owner](const Event& e) {
       const onetip_event c = toC(e);
       CallbackScope scope(owner);
@@ -162,7 +188,7 @@ ONETIP_C_API int32_t onetip_sensor_set_frame_callback(onetip_sensor* sensor, one
   return boundary(error, [&] {
     const auto s = lookupSensor(sensor);
     if (!callback) return s->sensor.onFrame({});
-    const CSensor* owner = s.get();
+    CSensor* owner = s.get();
     s->sensor.onFrame([callback, user, owner](const FrameResult& f) {
       const onetip_frame c = toC(f);
       const std::vector<onetip_marker> markers = markersToC(f);
@@ -193,9 +219,10 @@ ONETIP_C_API int32_t onetip_sensor_wait_event(onetip_sensor* sensor, double time
     requireNonNull(out, "onetip_sensor_wait_event: out");
     requireNonNull(got, "onetip_sensor_wait_event: got");
     const auto s = lookupSensor(sensor);
-    if (std::isnan(timeout_s)) throw Error(ErrorKind::input, "onetip_sensor_wait_event: timeout_s is NaN");
+    refuseInsideCallback(*s, "onetip_sensor_wait_event");
+    const double timeout = waitTimeout(timeout_s, "onetip_sensor_wait_event");
     Event e;
-    if (s->sensor.waitEvent(e, timeout_s)) {
+    if (timeout < 0 ? waitEventWithoutLimit(s->sensor, e) : s->sensor.waitEvent(e, timeout)) {
       *out = toC(e);
       *got = 1;
     }

@@ -6,7 +6,7 @@
 //
 // Position: the finger point's motion T(c0) - c0 = (dx, dy, -dz) in S (dz is
 // the press depth into the pad), i.e. (dx, -dz, dy) in Unity, times
-// unitsPerMm. Rotation: R_S = Rz(yaw) Ry(roll) Rx(pitch) (CONVENTIONS.md) as
+// unitsPerMm. Rotation: R_S = Rz(yaw) Ry(roll) Rx(pitch) (docs/reference.md) as
 // the quaternion q_S = qz(yaw) qy(roll) qx(pitch) = (w, x, y, z); in Unity
 // (x, y, z, w) = (-x, -z, -y, w). Plain doubles, no UnityEngine types, so
 // the maths is compiled and tested outside Unity.

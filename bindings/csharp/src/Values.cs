@@ -15,7 +15,7 @@ namespace Onetip
 
     /// <summary>[dx, dy, dz, yaw, pitch, roll]: the finger's motion since contact
     /// onset; dx, dy, dz in mm (dz = press depth, positive into the pad), yaw
-    /// about S.z, pitch about S.x, roll about S.y in degrees (CONVENTIONS.md).</summary>
+    /// about S.z, pitch about S.x, roll about S.y in degrees (docs/reference.md).</summary>
     public struct Input6
     {
         public double Dx, Dy, Dz, Yaw, Pitch, Roll;
@@ -51,7 +51,11 @@ namespace Onetip
             };
         }
 
-        public override string ToString() { return string.Format("{0} frame {1} {2}", Type, Frame, Input); }
+        public override string ToString()
+        {
+            return Type == EventType.Error ? string.Format("{0} frame {1}: {2}", Type, Frame, Message)
+                                           : string.Format("{0} frame {1} {2}", Type, Frame, Input);
+        }
     }
 
     /// <summary>One marker (id = row * cols + col), laid out as onetip_marker.</summary>

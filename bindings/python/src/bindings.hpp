@@ -8,8 +8,13 @@
 #pragma once
 
 #include <pybind11/pybind11.h>
+#include <pybind11/stl/filesystem.h>  // file arguments accept str and os.PathLike (pathlib.Path)
+
+#include <filesystem>
 
 namespace onetip::python {
+
+namespace fs = std::filesystem;
 
 void bindErrors(pybind11::module_& m);        // errors.cpp: onetip.Error and its kinds
 void bindValues(pybind11::module_& m);        // values.cpp: enums, Event, FrameResult, stats, clock, axes

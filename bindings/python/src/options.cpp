@@ -20,9 +20,11 @@ void bindOptions(py::module_& m) {
              SensorOptions o;
              py::object self = py::cast(o);
              for (const auto& [name, value] : fields) py::setattr(self, name, value);  // unknown names raise
-             return self.cast<SensorOptions>();
+             const SensorOptions result = self.cast<SensorOptions>();
+             result.validate();  // a bad value is refused here, not later by Sensor()
+             return result;
            }),
-           "Defaults, then each keyword sets the field of that name.")
+           "Defaults, then each keyword sets the field of that name; InputError names a bad value.")
       .def_readwrite("queue_capacity", &SensorOptions::queue_capacity)
       .def_readwrite("lossless", &SensorOptions::lossless)
       .def_readwrite("playback_rate", &SensorOptions::playback_rate)
@@ -44,8 +46,10 @@ void bindOptions(py::module_& m) {
       .def_readwrite("filter_beta", &SensorOptions::filter_beta)
       .def_readwrite("filter_derivative_cutoff_hz", &SensorOptions::filter_derivative_cutoff_hz)
       .def("validate", &SensorOptions::validate, "Raises InputError naming the first bad field.")
-      .def_static("load", &SensorOptions::load, py::arg("path"), "Reads a YAML/JSON options file; InputError if it cannot.")
-      .def("save", &SensorOptions::save, py::arg("path"), "Writes every field as YAML (atomically).");
+      .def_static("load", [](const fs::path& path) { return SensorOptions::load(path.string()); }, py::arg("path"),
+                  "Reads a YAML/JSON options file (str or os.PathLike); InputError if it cannot.")
+      .def("save", [](const SensorOptions& o, const fs::path& path) { o.save(path.string()); }, py::arg("path"),
+           "Writes every field as YAML (atomically).");
 }
 
 }  // namespace onetip::python

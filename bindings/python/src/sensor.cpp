@@ -144,10 +144,11 @@ Raises InputError naming the bad file, source or option.
 Callbacks (on_event, on_frame) run on the processing thread, holding the GIL;
 an exception they raise becomes an error event. Use as a context manager to
 stop on exit.)")
-      .def(py::init([](const std::string& source, const std::string& calibration, const std::string& pattern,
-                       const std::string& reference, const std::optional<SensorOptions>& options) {
-             return std::make_unique<PythonSensor>(SensorConfig(source, calibration, pattern, reference),
-                                                   options.value_or(SensorOptions{}));
+      .def(py::init([](const fs::path& source, const fs::path& calibration, const fs::path& pattern,
+                       const fs::path& reference, const std::optional<SensorOptions>& options) {
+             return std::make_unique<PythonSensor>(
+                 SensorConfig(source.string(), calibration.string(), pattern.string(), reference.string()),
+                 options.value_or(SensorOptions{}));
            }),
            py::arg("source"), py::arg("calibration") = "", py::arg("pattern") = "", py::arg("reference") = "",
            py::arg("options") = py::none())

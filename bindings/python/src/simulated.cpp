@@ -48,9 +48,9 @@ void bindSimulatedSensor(py::module_& m) {
       .def_property_readonly("image", &imageArray, "uint8 (height, width), both views; None when not rendered");
 
   py::class_<SimulatedSensor>(m, "SimulatedSensor", "Plays a scenario (samples/scenarios/*.yaml) frame by frame.")
-      .def(py::init([](const std::string& scenario, bool render, int frames, int seed) {
+      .def(py::init([](const fs::path& scenario, bool render, int frames, int seed) {
              py::gil_scoped_release nogil;
-             return openSimulation(scenario, SimulatedSensorOptions{render, frames, seed});
+             return openSimulation(scenario.string(), SimulatedSensorOptions{render, frames, seed});
            }),
            py::arg("scenario"), py::arg("render") = true, py::arg("frames") = 0, py::arg("seed") = -1)
       .def_property_readonly("frame_count", &SimulatedSensor::frameCount)
@@ -63,7 +63,12 @@ void bindSimulatedSensor(py::module_& m) {
             return std::nullopt;
           },
           "The next SimulatedFrame, or None after the last.")
-      .def("save_calibration", &SimulatedSensor::saveCalibration, py::arg("calibration_path"), py::arg("pattern_path"),
+      .def(
+          "save_calibration",
+          [](const SimulatedSensor& s, const fs::path& calibration, const fs::path& pattern) {
+            s.saveCalibration(calibration.string(), pattern.string());
+          },
+          py::arg("calibration_path"), py::arg("pattern_path"),
            "Writes the virtual sensor's exact calibration and pattern files.");
 }
 

@@ -1,7 +1,7 @@
 // onetip/events.hpp — what a running Sensor reports: discrete events and
 // per-frame results.
 //
-// Frames and units (CONVENTIONS.md): positions in millimetres in the sensor
+// Frames and units (docs/reference.md): positions in millimetres in the sensor
 // frame S (origin at the rest-state marker centroid, z out of the pad towards
 // the finger, x along increasing marker column, y = z × x); angles in degrees;
 // Input6 = [dx, dy, dz, yaw, pitch, roll], the finger's motion since contact

@@ -40,7 +40,7 @@
 
 namespace onetip {
 
-// What to open. Paths are files of CONVENTIONS.md (calibration, pattern).
+// What to open. Paths are files of docs/reference.md (calibration, pattern).
 struct SensorConfig {
   SensorConfig() = default;
   explicit SensorConfig(std::string source_, std::string calibration_ = {}, std::string pattern_ = {},

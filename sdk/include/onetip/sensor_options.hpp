@@ -1,10 +1,10 @@
 // onetip/sensor_options.hpp — how a Sensor runs: its threads and queues, and
 // the processing settings an application may tune. Plain values with
-// defaults; validate() names the first bad field; load() reads YAML or JSON
-// (OpenCV FileStorage), save() writes YAML.
+// defaults; validate() names the first bad field; load() reads plain YAML or
+// JSON (errors name the file, line and key), save() writes YAML.
 //
 // Axis arrays are in Input6 order [dx, dy, dz, yaw, pitch, roll]: mm for the
-// first three, degrees for the rest (CONVENTIONS.md).
+// first three, degrees for the rest (docs/reference.md).
 //
 // File format (every key optional; a missing key keeps its default, an
 // unknown key is an error so typos do not pass silently):

@@ -3,7 +3,7 @@
 // each frame's camera image and exact ground truth.
 //
 // Positions are in the sensor frame S (mm), angles in degrees, as in
-// CONVENTIONS.md. Thread-safety: one SimulatedSensor per thread; distinct
+// docs/reference.md. Thread-safety: one SimulatedSensor per thread; distinct
 // objects are independent.
 #pragma once
 

@@ -1,6 +1,6 @@
 // onetip/types.hpp — the plain value types shared by every part of the SDK.
 //
-// Frames and units follow CONVENTIONS.md: positions in millimetres in the
+// Frames and units follow docs/reference.md: positions in millimetres in the
 // sensor frame S (origin at the rest-state marker centroid, z out of the pad
 // towards the finger, x along increasing column index, y = z × x); user-facing
 // angles in degrees.
@@ -26,7 +26,7 @@ constexpr std::string_view toString(ContactState s) noexcept {
   return "none";
 }
 
-// The 6-D input vector [dx, dy, dz, yaw, pitch, roll] (CONVENTIONS.md):
+// The 6-D input vector [dx, dy, dz, yaw, pitch, roll] (docs/reference.md):
 // the finger's motion since contact onset, T = T_now * inverse(T_onset).
 // dx, dy: mm along S.x, S.y of T(c0) - c0 (c0: contact centroid at onset);
 // dz: mm, press depth, -(T(c0) - c0).z, positive into the pad;

@@ -4,8 +4,7 @@
 #include <cctype>
 #include <cmath>
 #include <filesystem>
-#include <opencv2/imgcodecs.hpp>
-
+#include "capture/image_file.hpp"
 #include "core/error.hpp"
 
 namespace onetip::capture {
@@ -48,9 +47,11 @@ Frame FolderSource::next() {
   f.index = static_cast<std::int64_t>(position_);
   f.timestamp_s = static_cast<double>(position_) / options_.nominal_rate_hz;
   ++position_;
-  cv::Mat grey = cv::imread(file, cv::IMREAD_GRAYSCALE);
-  const auto problem = checker_.problem(grey);
-  return deliver(std::move(f), std::move(grey), problem, fs::path(file).filename().string());
+  ImageLimits limits;
+  limits.expected = checker_.streamSize();
+  GreyImage image = readGreyImage(file, limits);
+  const auto problem = image.problem ? image.problem : checker_.problem(image.grey);
+  return deliver(std::move(f), std::move(image.grey), problem, fs::path(file).filename().string());
 }
 
 }  // namespace onetip::capture

@@ -3,9 +3,11 @@
 // The folder's .png files (also .jpg/.jpeg/.bmp/.tif/.tiff, any case), sorted
 // by file name, are read as 8-bit grey frames (colour is converted, 16-bit is
 // scaled down by OpenCV). A folder with a single frame is a valid stream of
-// one frame. Files that fail to decode, or whose size or content fails the
-// FrameChecker (capture/frame_check.hpp), are returned as skipped frames and
-// the stream goes on. Timestamps are index / nominal_rate_hz seconds.
+// one frame. Each file's header is checked before decoding (capture/image_file.hpp:
+// the stream's size once known, a pixel bound before), so a small file that
+// claims a huge image costs nothing. Files that fail that check or to decode,
+// or whose size or content fails the FrameChecker (capture/frame_check.hpp),
+// are returned as skipped frames and the stream goes on. Timestamps are index / nominal_rate_hz seconds.
 #pragma once
 
 #include <string>

@@ -27,6 +27,8 @@ class FrameChecker {
   // The reason the frame is unusable, or nullopt when it is fine. The first
   // accepted frame fixes the stream's size when none was expected.
   std::optional<std::string> problem(const cv::Mat& grey);
+  // The stream's frame size: the expected one, or the first accepted frame's, or {0, 0}.
+  cv::Size streamSize() const noexcept { return options_.expected_size; }
 
  private:
   FrameCheckOptions options_;

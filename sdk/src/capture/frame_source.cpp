@@ -26,6 +26,7 @@ Frame FrameSource::deliver(Frame f, cv::Mat grey, const std::optional<std::strin
                            const std::string& where) {
   if (problem) {
     f.status = FrameStatus::skipped;
+    f.encoded.clear();
     f.message = where + ": " + *problem;
   } else {
     f.status = FrameStatus::ok;

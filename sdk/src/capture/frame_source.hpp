@@ -21,6 +21,7 @@
 #include <opencv2/core.hpp>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace onetip::capture {
 
@@ -35,6 +36,9 @@ struct Frame {
   std::int64_t index = -1;   // position in the stream (0-based)
   double timestamp_s = 0.0;
   std::string message;       // why, when status is skipped or error
+  // The camera's compressed payload as delivered (MJPEG), when the source
+  // keeps it (keepEncodedFrames); empty otherwise.
+  std::vector<std::uint8_t> encoded;
 
   bool ok() const noexcept { return status == FrameStatus::ok; }
 };
@@ -54,6 +58,10 @@ class FrameSource {
   virtual Frame next() = 0;
   // Human-readable name of the source (e.g. the spec it was opened from).
   virtual std::string describe() const = 0;
+  // Asks the source to fill Frame::encoded with each frame's compressed
+  // payload (for recording without re-encoding); returns whether it can
+  // (a camera delivering MJPEG can, decoded sources cannot).
+  virtual bool keepEncodedFrames(bool /*on*/) { return false; }
   const FrameCounters& counters() const noexcept { return counters_; }
 
  protected:

@@ -7,6 +7,8 @@
 // omit the Huffman tables decode with the standard tables. Corrupt or
 // truncated data, and a frame whose header size differs from the expected
 // one, give !ok with the decoder's message; no exception, no partial image.
+// After a failure the TurboJPEG handle is replaced: a failed header read
+// otherwise made it report 0x0 for the next, valid frame.
 // One decoder per thread (it owns a TurboJPEG handle).
 #pragma once
 
@@ -30,6 +32,7 @@ class JpegGreyDecoder {
                       cv::Mat& grey);
 
  private:
+  DecodeResult decodeOnce(const std::uint8_t* data, std::size_t bytes, cv::Size expected, cv::Mat& grey);
   void* handle_ = nullptr;  // tjhandle
 };
 

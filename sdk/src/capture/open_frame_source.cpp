@@ -6,6 +6,7 @@
 #include <mutex>
 
 #include "capture/folder_source.hpp"
+#include "capture/session_source.hpp"
 #include "capture/v4l2_source.hpp"
 #include "capture/video_source.hpp"
 #include "core/error.hpp"
@@ -62,7 +63,9 @@ std::unique_ptr<FrameSource> openFrameSource(const std::string& spec) {
     return factory(rest);
   }
   std::error_code ec;
-  if (std::filesystem::is_directory(spec, ec)) return std::make_unique<FolderSource>(spec);
+  if (std::filesystem::is_directory(spec, ec))
+    return isSessionFolder(spec) ? std::unique_ptr<FrameSource>(std::make_unique<SessionSource>(spec))
+                                 : std::make_unique<FolderSource>(spec);
   if (std::filesystem::is_regular_file(spec, ec)) return std::make_unique<VideoSource>(spec);
   throw InputError("input '" + spec + "': no such folder, file or device");
 }

@@ -1,10 +1,11 @@
 // capture/open_frame_source.hpp — a FrameSource from a specification string.
 //
-// Specifications (CONVENTIONS.md, `--input SRC`):
+// Specifications (docs/reference.md, `--input SRC`):
 //   "v4l2:/dev/videoN"  a V4L2 camera (capture/v4l2_source.hpp)
 //   "SCHEME:REST"       a source registered for SCHEME, e.g. "sim:press.yaml"
 //                       once the simulator has called
 //                       registerFrameSourceScheme("sim", ...)
+//   a session folder    a recorded session (holds session.csv; session_source.hpp)
 //   a folder            its image files, sorted by name (folder_source.hpp)
 //   a file              a video file (video_source.hpp)
 // A scheme is two or more letters or digits before the first ':'.

@@ -212,11 +212,20 @@ Frame V4l2Source::capture() {
           ? DecodeResult{false, "the driver flagged the frame as corrupted"}
           : decode(static_cast<const std::uint8_t*>(buffers_[buf.index].start),
                    std::min<std::size_t>(buf.bytesused, buffers_[buf.index].length), grey);
+  if (decoded.ok && keep_encoded_) {
+    const auto* data = static_cast<const std::uint8_t*>(buffers_[buf.index].start);
+    f.encoded.assign(data, data + std::min<std::size_t>(buf.bytesused, buffers_[buf.index].length));
+  }
   if (io_->ioctl(fd_, VIDIOC_QBUF, &buf) != 0)
     return deviceLost(errnoText("camera lost (VIDIOC_QBUF)"));
   const auto problem = decoded.ok ? checker_.problem(grey) : decoded.message;
   const std::string where = "frame " + std::to_string(f.index);
   return deliver(std::move(f), std::move(grey), problem, where);
+}
+
+bool V4l2Source::keepEncodedFrames(bool on) {
+  keep_encoded_ = on && format_.fourcc == V4L2_PIX_FMT_MJPEG;
+  return keep_encoded_ || !on;
 }
 
 DecodeResult V4l2Source::decode(const std::uint8_t* data, std::size_t bytes, cv::Mat& grey) {

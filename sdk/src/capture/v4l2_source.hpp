@@ -52,6 +52,8 @@ class V4l2Source : public FrameSource {
 
   Frame next() override;
   std::string describe() const override { return "v4l2:" + device_; }
+  // MJPEG modes only: each ok frame also carries the JPEG bytes as the driver delivered them.
+  bool keepEncodedFrames(bool on) override;
   // The mode in use (valid after construction).
   const V4l2FormatOffer& format() const noexcept { return format_; }
   bool streaming() const noexcept { return fd_ >= 0; }
@@ -81,6 +83,7 @@ class V4l2Source : public FrameSource {
   std::int64_t index_ = 0;
   int failed_attempts_ = 0;
   bool ended_ = false;
+  bool keep_encoded_ = false;
   std::chrono::steady_clock::time_point next_attempt_{};
 };
 

@@ -20,10 +20,20 @@ Frame VideoSource::next() {
   Frame f;
   if (ended_) return f;
   cv::Mat image;
-  if (!video_.read(image) || image.empty()) {
+  bool read = false;
+  std::string failure;
+  try {  // a decoder exception on damaged data ends the stream; it never reaches the caller
+    read = video_.read(image) && !image.empty();
+  } catch (const std::exception& e) {
+    failure = e.what();
+  }
+  if (!read) {
     ended_ = true;
     video_.release();
-    return f;
+    if (failure.empty()) return f;
+    f.index = position_++;
+    const std::string where = "frame " + std::to_string(f.index);
+    return deliver(std::move(f), cv::Mat(), "cannot decode (" + failure + "); the video ends here", where);
   }
   f.index = position_++;
   const double ms = video_.get(cv::CAP_PROP_POS_MSEC);

@@ -15,6 +15,11 @@ void StickSlipOptions::validate() const {
 
 StickSlipClassifier::StickSlipClassifier(StickSlipOptions options) : options_(options) { options_.validate(); }
 
+void StickSlipClassifier::setOptions(const StickSlipOptions& options) {
+  options.validate();
+  options_ = options;
+}
+
 void StickSlipClassifier::reset(int marker_count) {
   label_.assign(static_cast<size_t>(marker_count), MarkerLabel::outside);
   anchor_.assign(static_cast<size_t>(marker_count), Eigen::Vector3d::Zero());

@@ -41,6 +41,8 @@ class StickSlipClassifier {
  public:
   explicit StickSlipClassifier(StickSlipOptions options = {});
 
+  // New thresholds from the next classify() on (validated like the options).
+  void setOptions(const StickSlipOptions& options);
   // Forgets every marker; sizes the tables for `marker_count` markers.
   void reset(int marker_count);
   // Markers of `members` that are valid in `now` keep their state; every other

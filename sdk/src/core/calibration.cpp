@@ -2,18 +2,24 @@
 
 #include <cmath>
 
+#include "core/config_file.hpp"
 #include "core/error.hpp"
 #include "core/filestorage_io.hpp"
 
 namespace onetip {
 
 namespace {
-void checkIntrinsics(const cv::Matx33d& K, const char* name) {
-  if (!(K(0, 0) > 0) || !(K(1, 1) > 0) || K(2, 2) != 1.0 || K(1, 0) != 0 || K(2, 0) != 0 ||
-      K(2, 1) != 0)
-    throw InputError(std::string("calibration: ") + name +
-                     ": not a pinhole intrinsic matrix (fx, fy > 0, last row 0 0 1)");
+bool isPinhole(const cv::Matx33d& K) {
+  return K(0, 0) > 0 && K(1, 1) > 0 && K(2, 2) == 1.0 && K(1, 0) == 0 && K(2, 0) == 0 && K(2, 1) == 0;
 }
+bool isRotation(const cv::Matx33d& R) {
+  return cv::norm(R.t() * R - cv::Matx33d::eye()) < 1e-4 && cv::determinant(R) > 0;
+}
+bool isBaseline(const cv::Vec3d& T) { return cv::norm(T) > 0 && std::isfinite(cv::norm(T)); }
+
+constexpr const char* kNotPinhole = "not a pinhole intrinsic matrix (fx, fy > 0, last row 0 0 1)";
+constexpr const char* kNotRotation = "not a rotation matrix";
+constexpr const char* kNotBaseline = "baseline must be a non-zero finite vector";
 }  // namespace
 
 void StereoCalibration::validate() const {
@@ -21,41 +27,65 @@ void StereoCalibration::validate() const {
     throw InputError("calibration: image_width/image_height: must be positive");
   if (split_x <= 0 || split_x >= image_width)
     throw InputError("calibration: split_x: must lie inside the image width");
-  checkIntrinsics(K_left, "K_left");
-  checkIntrinsics(K_right, "K_right");
-  const cv::Matx33d RtR = R.t() * R;
-  const double orth = cv::norm(RtR - cv::Matx33d::eye());
-  if (!(orth < 1e-4) || !(cv::determinant(R) > 0))
-    throw InputError("calibration: R: not a rotation matrix");
-  if (!(cv::norm(T) > 0) || !std::isfinite(cv::norm(T)))
-    throw InputError("calibration: T: baseline must be a non-zero finite vector");
+  if (!isPinhole(K_left)) throw InputError(std::string("calibration: K_left: ") + kNotPinhole);
+  if (!isPinhole(K_right)) throw InputError(std::string("calibration: K_right: ") + kNotPinhole);
+  if (!isRotation(R)) throw InputError(std::string("calibration: R: ") + kNotRotation);
+  if (!isBaseline(T)) throw InputError(std::string("calibration: T: ") + kNotBaseline);
 }
 
+namespace {
+// A matrix as cv::FileStorage writes it (a map tagged !!opencv-matrix with
+// rows, cols, dt, data) or as people write it: a flat list, or a list of rows.
+cv::Mat readMatrix(const ConfigNode& n, int rows, int cols) {
+  const std::string shape = "a " + std::to_string(rows) + "x" + std::to_string(cols) + " matrix";
+  if (!n.present()) n.fail("missing, expected " + shape);
+  constexpr double kLimit = 1e7;  // pixels, mm, distortion coefficients: anything larger is not a calibration
+  std::vector<double> v;
+  const auto count = static_cast<std::size_t>(rows * cols);
+  if (n.isMap()) {
+    n.allowOnly({"rows", "cols", "dt", "data", "type_id"});
+    const int got_rows = n["rows"].integer(1, 16);
+    const int got_cols = n["cols"].integer(1, 16);
+    if (got_rows * got_cols != rows * cols)  // 1x5 and 5x1 both hold a distortion vector
+      n.fail("expected " + shape + ", got " + std::to_string(got_rows) + "x" + std::to_string(got_cols));
+    v = n["data"].reals(count, -kLimit, kLimit);
+  } else if (n.isSeq() && n.size() == count) {
+    v = n.reals(count, -kLimit, kLimit);
+  } else if (n.isSeq() && n.size() == static_cast<std::size_t>(rows)) {
+    for (std::size_t r = 0; r < static_cast<std::size_t>(rows); ++r) {
+      const auto row = n[r].reals(static_cast<std::size_t>(cols), -kLimit, kLimit);
+      v.insert(v.end(), row.begin(), row.end());
+    }
+  } else {
+    n.fail("expected " + shape + " (a list of " + std::to_string(count) + " numbers or an opencv-matrix)");
+  }
+  return cv::Mat(v, true).reshape(1, rows);
+}
+
+cv::Matx33d readIntrinsics(const ConfigNode& n) {
+  const cv::Matx33d K(readMatrix(n, 3, 3));
+  if (!isPinhole(K)) n.fail(kNotPinhole);
+  return K;
+}
+}  // namespace
+
 StereoCalibration loadCalibration(const std::string& path) {
-  cv::FileStorage fs = openForReading(path);
-  const cv::FileNode root = fs.root();
+  // Keys other than these (rms_px, notes) are allowed: the file is also OpenCV's.
+  const ConfigNode root = ConfigNode::load(path);
   StereoCalibration c;
-  c.image_width = readRequiredInt(root, "image_width", path);
-  c.image_height = readRequiredInt(root, "image_height", path);
-  c.split_x = readRequiredInt(root, "split_x", path);
-  c.flip_left = readRequiredInt(root, "flip_left", path) != 0;
-  c.flip_right = readRequiredInt(root, "flip_right", path) != 0;
-  c.K_left = cv::Matx33d(readRequiredMat(root, "K_left", 3, 3, path));
-  c.K_right = cv::Matx33d(readRequiredMat(root, "K_right", 3, 3, path));
-  const cv::Mat dl = readRequiredMat(root, "D_left", 1, 5, path);
-  const cv::Mat dr = readRequiredMat(root, "D_right", 1, 5, path);
-  for (int i = 0; i < 5; ++i) {
-    c.D_left[i] = dl.at<double>(i);
-    c.D_right[i] = dr.at<double>(i);
-  }
-  c.R = cv::Matx33d(readRequiredMat(root, "R", 3, 3, path));
-  const cv::Mat t = readRequiredMat(root, "T", 3, 1, path);
-  c.T = cv::Vec3d(t.at<double>(0), t.at<double>(1), t.at<double>(2));
-  try {
-    c.validate();
-  } catch (const InputError& e) {
-    throw InputError(path + ": " + e.what());
-  }
+  c.image_width = root["image_width"].integer(2, 100000);
+  c.image_height = root["image_height"].integer(2, 100000);
+  c.split_x = root["split_x"].integer(1, c.image_width - 1);
+  c.flip_left = root["flip_left"].flag();
+  c.flip_right = root["flip_right"].flag();
+  c.K_left = readIntrinsics(root["K_left"]);
+  c.K_right = readIntrinsics(root["K_right"]);
+  c.D_left = cv::Vec<double, 5>(readMatrix(root["D_left"], 1, 5));
+  c.D_right = cv::Vec<double, 5>(readMatrix(root["D_right"], 1, 5));
+  c.R = cv::Matx33d(readMatrix(root["R"], 3, 3));
+  if (!isRotation(c.R)) root["R"].fail(kNotRotation);
+  c.T = cv::Vec3d(readMatrix(root["T"], 3, 1));
+  if (!isBaseline(c.T)) root["T"].fail(kNotBaseline);
   return c;
 }
 

@@ -1,4 +1,4 @@
-// core/calibration.hpp — the virtual binocular calibration file (CONVENTIONS.md).
+// core/calibration.hpp — the virtual binocular calibration file (docs/reference.md).
 //
 // One camera frame of image_width x image_height holds both views side by
 // side; the left view is columns [0, split_x), the right [split_x, width).

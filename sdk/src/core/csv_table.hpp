@@ -1,5 +1,5 @@
 // core/csv_table.hpp — small CSV writer and reader for the files of
-// CONVENTIONS.md (pose.csv, markers.csv, gt_*.csv, datasets, timing.csv).
+// docs/reference.md (pose.csv, markers.csv, gt_*.csv, datasets, timing.csv).
 //
 // CsvWriter writes through an AtomicFile: the file appears complete at
 // commit() or not at all. Numbers are written with enough digits to round-trip

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/error.hpp"
+#include "core/config_file.hpp"
 #include "core/filestorage_io.hpp"
 
 namespace onetip {
@@ -15,17 +16,12 @@ void MarkerPattern::validate() const {
 }
 
 MarkerPattern loadPattern(const std::string& path) {
-  cv::FileStorage fs = openForReading(path);
-  const cv::FileNode root = fs.root();
+  const ConfigNode root = ConfigNode::load(path);
+  root.allowOnly({"rows", "cols", "square_mm"});
   MarkerPattern p;
-  p.rows = readRequiredInt(root, "rows", path);
-  p.cols = readRequiredInt(root, "cols", path);
-  p.square_mm = readRequiredReal(root, "square_mm", path);
-  try {
-    p.validate();
-  } catch (const InputError& e) {
-    throw InputError(path + ": " + e.what());
-  }
+  p.rows = root["rows"].integer(2, 1000);
+  p.cols = root["cols"].integer(2, 1000);
+  p.square_mm = root["square_mm"].real(1e-3, 1e4);
   return p;
 }
 

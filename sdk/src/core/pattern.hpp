@@ -1,4 +1,4 @@
-// core/pattern.hpp — the checkerboard marker pattern (CONVENTIONS.md).
+// core/pattern.hpp — the checkerboard marker pattern (docs/reference.md).
 //
 // rows x cols inner corners, square_mm apart. Marker id = row * cols + col;
 // in the left view row 0 is the top row of corners and col 0 the leftmost.
@@ -24,7 +24,8 @@ struct MarkerPattern {
   void validate() const;
 };
 
-// Reads an OpenCV FileStorage YAML or JSON pattern file; throws InputError.
+// Reads a pattern file (YAML or JSON, keys rows, cols, square_mm; core/config_file.hpp);
+// throws InputError naming the file, line and key.
 MarkerPattern loadPattern(const std::string& path);
 // Writes the pattern file atomically; throws InputError when it cannot.
 void savePattern(const MarkerPattern& pattern, const std::string& path);

@@ -1,4 +1,4 @@
-// core/rotation.hpp — the rotation and 6-D input conventions of CONVENTIONS.md.
+// core/rotation.hpp — the rotation and 6-D input conventions of docs/reference.md.
 //
 // R = Rz(yaw) * Ry(roll) * Rx(pitch): yaw about S.z, roll about S.y (the
 // finger's long axis), pitch about S.x, right-hand rule, angles in radians here.

@@ -1,6 +1,6 @@
 // core/sensor_frame.hpp — the sensor frame S, derived from the rest markers.
 //
-// CONVENTIONS.md: origin at the centroid of the rest-state 3-D markers; z the
+// docs/reference.md: origin at the centroid of the rest-state 3-D markers; z the
 // normal of their least-squares plane, pointing away from the camera; x the
 // direction of increasing column index projected onto that plane; y = z × x.
 // Input markers are in the left camera frame L (camera at the origin), so

@@ -1,6 +1,7 @@
 #include "haptics/dataset_binary.hpp"
 
 #include <array>
+#include <cmath>
 #include <cstring>
 #include <fstream>
 #include <vector>
@@ -15,7 +16,8 @@ namespace {
 constexpr std::array<char, 8> kMagic = {'O', 'T', 'H', 'A', 'P', 'D', 'S', '\0'};
 constexpr size_t kHeaderBytes = 24;
 constexpr size_t kChecksumBytes = 8;
-constexpr std::uint32_t kMaxChannels = 4096;
+constexpr auto kMaxChannels = static_cast<std::uint32_t>(kMaxDatasetChannels);
+constexpr std::uint64_t kMaxFileBytes = 1ULL << 30;  // 1 GiB: 13 million rows of 20 channels
 
 static_assert(sizeof(float) == 4, "float32 expected");
 
@@ -53,6 +55,9 @@ TactileDataset readDatasetBinary(const std::string& path) {
   std::ifstream in(path, std::ios::binary | std::ios::ate);
   if (!in) throw InputError(path + ": cannot open");
   const auto length = static_cast<size_t>(in.tellg());
+  if (length > kMaxFileBytes)
+    throw InputError(path + ": " + std::to_string(length) + " bytes, more than the " + std::to_string(kMaxFileBytes) +
+                     "-byte bound of a binary dataset");
   in.seekg(0);
   std::vector<char> bytes(length);
   if (!in.read(bytes.data(), static_cast<std::streamsize>(length))) throw InputError(path + ": read failed");
@@ -89,6 +94,12 @@ TactileDataset readDatasetBinary(const std::string& path) {
     std::memcpy(d.commands.data() + 3 * r, p, 12);
     std::memcpy(d.sensed.data() + channels * r, p + 12, 4 * channels);
     p += per_row;
+    for (std::uint32_t c = 0; c < 3 + channels; ++c) {  // a valid checksum does not make the values usable
+      const float v = c < 3 ? d.commands[3 * r + c] : d.sensed[channels * r + c - 3];
+      if (!std::isfinite(v))
+        throw InputError(path + ": row " + std::to_string(r + 1) + ", column " +
+                         (c < 3 ? "m" + std::to_string(c + 1) : "s" + std::to_string(c - 2)) + ": not a finite number");
+    }
   }
   return d;
 }

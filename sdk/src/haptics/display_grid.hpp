@@ -9,6 +9,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <vector>
 
 #include "haptics/platform_kinematics.hpp"
@@ -17,7 +18,14 @@
 
 namespace onetip::haptics {
 
-// Angles per motor on the grid (InputError unless 0 < step_deg <= 165).
+// The most configurations a grid may have: 100^3 (about 92 MB as a 20-channel
+// dataset in memory, hours of collection); smaller steps are refused before any
+// allocation (`collect --step 1e-9` once grew to 8.4 GB).
+constexpr std::size_t kMaxGridConfigurations = 1'000'000;
+constexpr double kMinGridStepDeg = 1.65;  // 165 / 100: the smallest step within the bound
+
+// Angles per motor on the grid (InputError unless 0 < step_deg <= 165 and the
+// grid has at most kMaxGridConfigurations configurations).
 std::vector<double> gridAngles(double step_deg);
 // All configurations in collection order.
 std::vector<std::array<double, 3>> gridConfigurations(double step_deg);

@@ -1,6 +1,8 @@
 #include "haptics/tactile_dataset.hpp"
 
 #include <charconv>
+#include <cmath>
+#include <limits>
 
 #include "core/csv_table.hpp"
 #include "core/error.hpp"
@@ -31,6 +33,9 @@ int channelsFromHeader(const CsvTable& t, bool with_commands, const std::string&
   if (t.header.size() <= fixed)
     throw InputError(path + ": header has no sensed channels (expected " +
                      (with_commands ? std::string("m1,m2,m3,") : std::string()) + "s1,...,sN)");
+  if (t.header.size() - fixed > static_cast<size_t>(kMaxDatasetChannels))
+    throw InputError(path + ": line 1: " + std::to_string(t.header.size() - fixed) + " sensed channels, more than " +
+                     std::to_string(kMaxDatasetChannels));
   const int channels = static_cast<int>(t.header.size() - fixed);
   const auto expected = datasetCsvHeader(channels, with_commands);
   for (size_t i = 0; i < expected.size(); ++i)
@@ -42,7 +47,15 @@ int channelsFromHeader(const CsvTable& t, bool with_commands, const std::string&
 }
 
 std::string cellWhere(const std::string& path, size_t row, const std::string& column) {
-  return path + ": data row " + std::to_string(row + 1) + ", column " + column;
+  return path + ": line " + std::to_string(row + 2) + ", column " + column;
+}
+
+// A cell as a finite number that float32 can hold.
+double parseFloatCell(const std::string& cell, const std::string& where) {
+  const double v = parseNumber(cell, where);
+  if (std::fabs(v) > static_cast<double>(std::numeric_limits<float>::max()))
+    throw InputError(where + ": '" + cell + "' is beyond the float32 range (+-3.4e38)");
+  return v;
 }
 
 std::string shortestFloat(float v) {
@@ -61,7 +74,7 @@ TactileDataset readDatasetCsv(const std::string& path) {
   d.sensed.reserve(static_cast<size_t>(d.channels) * t.rows.size());
   for (size_t r = 0; r < t.rows.size(); ++r)
     for (size_t c = 0; c < t.header.size(); ++c) {
-      const float v = static_cast<float>(parseNumber(t.rows[r][c], cellWhere(path, r, t.header[c])));
+      const float v = static_cast<float>(parseFloatCell(t.rows[r][c], cellWhere(path, r, t.header[c])));
       (c < 3 ? d.commands : d.sensed).push_back(v);
     }
   return d;
@@ -74,7 +87,7 @@ QuerySet readQueriesCsv(const std::string& path) {
   q.values.reserve(static_cast<size_t>(q.channels) * t.rows.size());
   for (size_t r = 0; r < t.rows.size(); ++r)
     for (size_t c = 0; c < t.header.size(); ++c)
-      q.values.push_back(parseNumber(t.rows[r][c], cellWhere(path, r, t.header[c])));
+      q.values.push_back(parseFloatCell(t.rows[r][c], cellWhere(path, r, t.header[c])));
   return q;
 }
 

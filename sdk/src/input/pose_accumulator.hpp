@@ -3,7 +3,7 @@
 // Given the finger's increments dT_k = T_k T_{k-1}^-1 (S, mm) since contact
 // onset and the onset contact centroid c0:
 //  - composed (proper SE(3)): T_k = dT_k ... dT_1, then the 6-D vector of
-//    CONVENTIONS.md, input6FromMotion(T_k, c0) (core/rotation.hpp);
+//    docs/reference.md, input6FromMotion(T_k, c0) (core/rotation.hpp);
 //  - euler_sum (the paper's Sec. III-E): every increment turned into its own
 //    6-D vector input6FromMotion(dT_k, c0) (Euler angle increments, the
 //    displacement of c0) and those summed. Exact for motion about one fixed

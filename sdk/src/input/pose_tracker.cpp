@@ -24,6 +24,7 @@ void PoseTrackerOptions::validate() const {
 PoseTracker::PoseTracker(PoseTrackerOptions options)
     : options_((options.validate(), options)),
       analyzer_(options_.contact),
+      self_(options_.pose.self),
       estimator_(options_.pose),
       filter_(makeInputFilter(options_.filter)),
       button_(options_.press) {}
@@ -73,7 +74,9 @@ TrackerResult PoseTracker::update(const MarkerField& now_S, const MarkerField& r
          "too few valid markers (" + std::to_string(held.field.valid_markers) + "): output held");
     return held;
   }
-  r.step = estimator_.update(r.field, now_S);
+  self_.setRest(rest_S);
+  self_.observe(now_S, t, !r.field.in_contact);
+  r.step = estimator_.update(r.field, now_S, self_.current());
   r.contact = r.step.active;
   r.state = r.step.state;
   if (r.step.onset) {

@@ -3,6 +3,8 @@
 // Per frame: update(now_S, rest_S, t) with the current and rest MarkerField in
 // the sensor frame S (mm, same grid) and the time in seconds runs
 //   contact analysis (contact/contact_analyzer.hpp)
+//   -> what the sensor measures about itself (pose/sensor_self_model.hpp:
+//      marker noise on the frames out of contact, pitch, frame interval)
 //   -> stick/slip labels and the finger's increment (pose/adaptive_pose_estimator.hpp)
 //   -> the 6-D signal since contact onset (pose_accumulator.hpp; re-zeroed at
 //      every new contact; both accumulations are reported, `raw` is the chosen one)
@@ -24,6 +26,7 @@
 #include "input/pose_accumulator.hpp"
 #include "input/press_button.hpp"
 #include "pose/adaptive_pose_estimator.hpp"
+#include "pose/sensor_self_model.hpp"
 
 namespace onetip::input {
 
@@ -66,6 +69,7 @@ class PoseTracker {
   TrackerResult update(const MarkerField& now_S, const MarkerField& rest_S, double t);
   void reset();
   const PoseTrackerOptions& options() const { return options_; }
+  const pose::SensorSelf& sensorSelf() const { return self_.current(); }
 
  private:
   void emit(TrackerResult& r, EventType type, std::string message = {}) const;
@@ -73,6 +77,7 @@ class PoseTracker {
 
   PoseTrackerOptions options_;
   contact::ContactAnalyzer analyzer_;
+  pose::SensorSelfModel self_;
   pose::AdaptivePoseEstimator estimator_;
   PoseAccumulator accumulator_;
   std::unique_ptr<InputFilter> filter_;

@@ -1,5 +1,5 @@
 // os_outputs/axis_scaling.hpp — the 6-D input [dx, dy, dz, yaw, pitch, roll]
-// (mm, mm, mm, deg, deg, deg; CONVENTIONS.md) as integer axes for other programs.
+// (mm, mm, mm, deg, deg, deg; docs/reference.md) as integer axes for other programs.
 //
 // Axis order, shared by both outputs (the rotation axes are the axes the
 // rotation turns about, in the sensor frame S):

@@ -47,12 +47,13 @@ void SpnavServerOptions::validate() const {
   requireInRange("max_clients", max_clients, 1, 1024);
   requireInRange("max_queued_events", max_queued_events, 1, 65536);
   requireInRange("hello_timeout_ms", hello_timeout_ms, 0, 10000);
+  requireInRange("idle_timeout_ms", idle_timeout_ms, 100, 3600000);
 }
 
 struct SpnavServer::State {
   struct Client {
-    Client(int socket, spnav::DeviceInfo device, Clock::time_point deadline)
-        : fd(socket), session(std::move(device)), hello_deadline(deadline) {}
+    Client(int socket, spnav::DeviceInfo device, Clock::time_point deadline, Clock::time_point now)
+        : fd(socket), session(std::move(device)), hello_deadline(deadline), last_activity(now) {}
     ~Client() { ::close(fd); }
     Client(const Client&) = delete;
     Client& operator=(const Client&) = delete;
@@ -61,6 +62,7 @@ struct SpnavServer::State {
     int fd;
     spnav::Session session;
     Clock::time_point hello_deadline;
+    Clock::time_point last_activity;  // connected, or last sent us bytes / took bytes we wrote
     bool released = false;  // events may flow (greeted, or hello timed out)
     bool dead = false;
     std::vector<std::byte> staging;
@@ -95,6 +97,8 @@ struct SpnavServer::State {
   void flush(Client& c);
   bool hasOutput(Client& c);
   int pollTimeoutMs(Clock::time_point now) const;
+  bool evictIdlest(Clock::time_point now);
+  void evictStalled(Clock::time_point now);
   void removeDead();
 };
 
@@ -118,15 +122,17 @@ void SpnavServer::State::acceptClients() {
   for (;;) {
     const int fd = ::accept4(listener.fd(), nullptr, nullptr, SOCK_NONBLOCK | SOCK_CLOEXEC);
     if (fd < 0) return;  // EAGAIN: none left (other errors: try again on the next wake-up)
+    const auto now = Clock::now();
     std::lock_guard lock(mutex);
-    if (clients.size() >= static_cast<size_t>(options.max_clients)) {
+    const auto live = std::count_if(clients.begin(), clients.end(), [](const auto& c) { return !c->dead; });
+    if (live >= options.max_clients && !evictIdlest(now)) {
       ::close(fd);
       ++stats.refused;
       continue;
     }
     spnav::DeviceInfo device{options.device_name, options.device_path, kAxisCount, 1};
-    auto c = std::make_unique<Client>(fd, std::move(device),
-                                      Clock::now() + std::chrono::milliseconds(options.hello_timeout_ms));
+    auto c = std::make_unique<Client>(fd, std::move(device), now + std::chrono::milliseconds(options.hello_timeout_ms),
+                                      now);
     c->released = options.hello_timeout_ms == 0;
     clients.push_back(std::move(c));
     ++stats.accepted;
@@ -143,6 +149,7 @@ void SpnavServer::State::readFrom(Client& c) {
     ++stats.hangups;
     return;
   }
+  c.last_activity = Clock::now();
   const auto result = c.session.feed(std::span<const std::byte>(buffer, static_cast<size_t>(n)));
   if (result.garbage) {
     c.dead = true;
@@ -180,6 +187,7 @@ void SpnavServer::State::flush(Client& c) {
       return;
     }
     c.staged_sent += static_cast<size_t>(n);
+    if (n > 0) c.last_activity = Clock::now();
     std::lock_guard lock(mutex);
     stats.bytes_sent += static_cast<std::uint64_t>(n);
   }
@@ -193,7 +201,29 @@ int SpnavServer::State::pollTimeoutMs(Clock::time_point now) const {
     const int ms = static_cast<int>(std::clamp<long long>(left + 1, 0, 10000));
     timeout = timeout < 0 ? ms : std::min(timeout, ms);
   }
+  constexpr int kIdleCheckMs = 250;  // idle clients are looked for at least this often
+  if (!clients.empty()) timeout = timeout < 0 ? kIdleCheckMs : std::min(timeout, kIdleCheckMs);
   return timeout;
+}
+
+bool SpnavServer::State::evictIdlest(Clock::time_point now) {  // under mutex
+  Client* idlest = nullptr;
+  for (auto& c : clients)
+    if (!c->dead && (!idlest || c->last_activity < idlest->last_activity)) idlest = c.get();
+  if (!idlest || now - idlest->last_activity < std::chrono::milliseconds(options.idle_timeout_ms)) return false;
+  idlest->dead = true;
+  ++stats.idle_evictions;
+  return true;
+}
+
+void SpnavServer::State::evictStalled(Clock::time_point now) {
+  for (auto& c : clients) {
+    if (c->dead || now - c->last_activity < std::chrono::milliseconds(options.idle_timeout_ms) || !hasOutput(*c))
+      continue;
+    c->dead = true;
+    std::lock_guard lock(mutex);
+    ++stats.idle_evictions;
+  }
 }
 
 void SpnavServer::State::removeDead() {
@@ -229,6 +259,7 @@ void SpnavServer::State::run() {
       if (!c->released && now >= c->hello_deadline) c->released = true;
       flush(*c);
     }
+    evictStalled(Clock::now());
     removeDead();
   }
 }

@@ -20,7 +20,13 @@
 // counted, so the latest state and the final zero get through) and wakes the
 // I/O thread: it never waits for a client. A client that never reads only
 // loses its own events; one that sends garbage (see spnav_protocol.hpp) is
-// disconnected; connections beyond max_clients are closed at once. Events are
+// disconnected. A client is idle while it neither sends anything nor takes
+// any byte the server writes (its socket buffer full); one idle for
+// idle_timeout_ms with events waiting for it is disconnected (a stalled
+// reader). When all max_clients slots are taken, a new connection evicts the
+// client idle the longest if it has been idle for idle_timeout_ms, so idle
+// clients never lock out a new one; otherwise the new connection is closed at
+// once (every slot is held by an active client). Events are
 // held for a new client until it sends its first word (the libspnav
 // handshake) or hello_timeout_ms passes, so the handshake reply is never
 // preceded by an event.
@@ -47,6 +53,7 @@ struct SpnavServerOptions {
   int max_clients = 16;           // 1..1024
   int max_queued_events = 256;    // per client, 1..65536
   int hello_timeout_ms = 500;     // 0..10000
+  int idle_timeout_ms = 10000;    // 100..3600000: idle clients are evicted after this
   std::string device_name = "onetip tactile fingertip";  // v1 DEV_NAME reply
   std::string device_path;        // v1 DEV_PATH reply, e.g. the input source
   void validate() const;          // InputError naming the bad field
@@ -55,7 +62,8 @@ struct SpnavServerOptions {
 struct SpnavServerStats {
   int clients = 0;                      // connected now
   std::uint64_t accepted = 0;           // connections accepted in total
-  std::uint64_t refused = 0;            // closed at once: over max_clients
+  std::uint64_t refused = 0;            // closed at once: over max_clients, none idle
+  std::uint64_t idle_evictions = 0;     // disconnected after idle_timeout_ms (stalled, or for a new client)
   std::uint64_t garbage_disconnects = 0;
   std::uint64_t hangups = 0;            // clients that closed or failed
   std::uint64_t events_published = 0;   // publish() calls

@@ -1,6 +1,7 @@
 #include "pipeline/capture_loop.hpp"
 
 #include <cmath>
+#include <string>
 
 namespace onetip::pipeline {
 
@@ -25,7 +26,15 @@ void Pipeline::Shared::captureLoop() {
   int consecutive_errors = 0;
   while (!stop) {
     const auto t0 = SteadyClock::now();
-    capture::Frame f = source->next();
+    capture::Frame f;
+    bool threw = false;
+    try {  // sources promise not to throw; one that does ends the stream as a failure, not the host
+      f = source->next();
+    } catch (const std::exception& e) {
+      threw = true;
+      f.status = capture::FrameStatus::error;
+      f.message = std::string("the frame source failed: ") + e.what();
+    }
     const auto t1 = SteadyClock::now();
     if (stop || f.status == capture::FrameStatus::end) break;
     Captured c;
@@ -35,8 +44,8 @@ void Pipeline::Shared::captureLoop() {
     c.capture_ms = msBetween(t0, t1);
     if (f.status == capture::FrameStatus::error) {
       ++source_errors;
-      c.kind = ++consecutive_errors >= options.max_consecutive_source_errors ? Captured::Kind::source_failed
-                                                                             : Captured::Kind::source_error;
+      c.kind = ++consecutive_errors >= options.max_consecutive_source_errors || threw ? Captured::Kind::source_failed
+                                                                                       : Captured::Kind::source_error;
     } else {
       consecutive_errors = 0;
       if (f.status == capture::FrameStatus::skipped) {

@@ -101,6 +101,9 @@ FrameProcessor::FrameProcessor(const StereoCalibration& calib, const MarkerPatte
   calib.validate();
   pattern.validate();
   options.validate();
+  if (options.min_markers > pattern.count())
+    throw InputError("frame processor: min_markers: " + std::to_string(options.min_markers) + " is more than the " +
+                     std::to_string(pattern.count()) + " markers of the pattern (every frame would be lost)");
   impl_ = std::make_unique<Impl>(calib, pattern, std::move(options));
 }
 

@@ -7,7 +7,7 @@
 //
 // The first frame given to setReference() (or process() before any reference)
 // is the rest state: it assigns the marker ids (anchored in each view,
-// CONVENTIONS.md) and defines the sensor frame S. Every stage is timed
+// docs/reference.md) and defines the sensor frame S. Every stage is timed
 // (milliseconds, steady clock, on the calling thread). Bad frames (wrong size,
 // empty, tracking lost) give a status and a message, never an exception, so a
 // stream goes on with its next good frame. Threads, queues and time-stamping

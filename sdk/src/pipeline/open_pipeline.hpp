@@ -13,7 +13,9 @@
 
 #include <memory>
 #include <string>
+#include <utility>
 
+#include "capture/frame_source.hpp"
 #include "pipeline/pipeline.hpp"
 
 namespace onetip::pipeline {
@@ -26,5 +28,12 @@ struct PipelineSpec {
 };
 
 std::unique_ptr<Pipeline> openPipeline(const PipelineSpec& spec, const PipelineOptions& options = {});
+
+// The calibration and pattern for `source` (opened from the specification
+// `spec`): both files, or for a "sim:" source neither (the simulator's own).
+// checkRigFiles throws when only one of the two files is given.
+void checkRigFiles(const std::string& calibration, const std::string& pattern);
+std::pair<StereoCalibration, MarkerPattern> loadRig(const std::string& calibration, const std::string& pattern,
+                                                    const capture::FrameSource& source, const std::string& spec);
 
 }  // namespace onetip::pipeline

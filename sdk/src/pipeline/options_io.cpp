@@ -1,9 +1,11 @@
 #include "pipeline/options_io.hpp"
 
+#include <algorithm>
 #include <array>
-#include <cmath>
 #include <set>
+#include <vector>
 
+#include "core/config_file.hpp"
 #include "core/error.hpp"
 #include "core/filestorage_io.hpp"
 
@@ -21,61 +23,61 @@ const std::array<std::pair<input::FilterKind, const char*>, 3> kFilters{
     {{input::FilterKind::none, "none"}, {input::FilterKind::moving_average, "moving_average"},
      {input::FilterKind::one_euro, "one_euro"}}};
 
+// Reads one key at a time into `options` and validates right after each, so a
+// value the options refuse is reported at its own key and line (the base
+// options are valid, so the first failure belongs to the key just read).
 class Reader {
  public:
-  Reader(const cv::FileNode& root, std::string path) : root_(root), path_(std::move(path)) {}
+  Reader(const ConfigNode& root, PipelineOptions& options) : root_(root), options_(options) {}
 
   void real(const char* key, double& out) const {
-    const cv::FileNode n = root_[key];
-    if (n.empty()) return;
-    if (!n.isReal() && !n.isInt()) fail(key, "must be a number");
-    out = static_cast<double>(n);
+    const ConfigNode n = root_[key];
+    if (!n.present()) return;
+    out = n.real(-kLimit, kLimit);
+    check(n);
   }
   void integer(const char* key, int& out) const {
-    const cv::FileNode n = root_[key];
-    if (n.empty()) return;
-    if (!n.isInt()) fail(key, "must be an integer");
-    out = static_cast<int>(n);
+    const ConfigNode n = root_[key];
+    if (!n.present()) return;
+    out = n.integer(-static_cast<int>(kLimit), static_cast<int>(kLimit));
+    check(n);
   }
   void flag(const char* key, bool& out) const {
-    int v = out ? 1 : 0;
-    integer(key, v);
-    if (v != 0 && v != 1) fail(key, "must be 0 or 1");
-    out = v == 1;
+    const ConfigNode n = root_[key];
+    if (!n.present()) return;
+    out = n.flag();
+    check(n);
   }
   void six(const char* key, std::array<double, 6>& out) const {
-    const cv::FileNode n = root_[key];
-    if (n.empty()) return;
-    if (!n.isSeq() || n.size() != 6) fail(key, "must be a list of 6 numbers [dx, dy, dz, yaw, pitch, roll]");
-    for (int k = 0; k < 6; ++k) {
-      const cv::FileNode e = n[k];
-      if (!e.isReal() && !e.isInt()) fail(key, "must be a list of 6 numbers [dx, dy, dz, yaw, pitch, roll]");
-      out[static_cast<size_t>(k)] = static_cast<double>(e);
-    }
+    const ConfigNode n = root_[key];
+    if (!n.present()) return;
+    const std::vector<double> v = n.reals(6, -kLimit, kLimit);
+    std::copy(v.begin(), v.end(), out.begin());
+    check(n);
   }
   void filter(const char* key, input::FilterKind& out) const {
-    const cv::FileNode n = root_[key];
-    if (n.empty()) return;
-    if (!n.isString()) fail(key, "must be \"none\", \"moving_average\" or \"one_euro\"");
-    const std::string name = static_cast<std::string>(n);
+    const ConfigNode n = root_[key];
+    if (!n.present()) return;
+    const std::string name = n.text();
     for (const auto& [kind, text] : kFilters)
       if (name == text) {
         out = kind;
-        return;
+        return check(n);
       }
-    fail(key, "'" + name + "' is not \"none\", \"moving_average\" or \"one_euro\"");
-  }
-  void rejectUnknownKeys() const {
-    for (const cv::FileNode& n : root_)
-      if (!kKeys.count(n.name())) fail(n.name(), "unknown option");
-  }
-  [[noreturn]] void fail(const std::string& key, const std::string& why) const {
-    throw InputError(path_ + ": " + key + ": " + why);
+    n.fail("expected \"none\", \"moving_average\" or \"one_euro\", got \"" + name + "\"");
   }
 
  private:
-  cv::FileNode root_;
-  std::string path_;
+  static constexpr double kLimit = 1e9;  // beyond any option's range: the options' own checks say more
+  void check(const ConfigNode& n) const {
+    try {
+      options_.validate();
+    } catch (const InputError& e) {
+      n.fail(e.what());
+    }
+  }
+  ConfigNode root_;
+  PipelineOptions& options_;
 };
 
 void writeSix(cv::FileStorage& fs, const char* key, const std::array<double, 6>& v) {
@@ -87,12 +89,11 @@ void writeSix(cv::FileStorage& fs, const char* key, const std::array<double, 6>&
 }  // namespace
 
 PipelineOptions loadPipelineOptions(const std::string& path, const PipelineOptions& base) {
-  cv::FileStorage fs = openForReading(path);
-  const cv::FileNode root = fs.root();
-  if (!root.isMap()) throw InputError(path + ": expected a map of options");
-  Reader r(root, path);
-  r.rejectUnknownKeys();
+  const ConfigNode root = ConfigNode::load(path);
+  root.allowOnly(kKeys);
   PipelineOptions o = base;
+  o.validate();
+  const Reader r(root, o);
   input::PoseTrackerOptions& pose = o.processor.pose;
   r.integer("queue_capacity", o.queue_capacity);
   r.flag("lossless", o.lossless);
@@ -114,11 +115,6 @@ PipelineOptions loadPipelineOptions(const std::string& path, const PipelineOptio
   r.real("filter_min_cutoff_hz", pose.filter.min_cutoff_hz);
   r.real("filter_beta", pose.filter.beta);
   r.real("filter_derivative_cutoff_hz", pose.filter.derivative_cutoff_hz);
-  try {
-    o.validate();
-  } catch (const InputError& e) {
-    throw InputError(path + ": " + e.what());
-  }
   return o;
 }
 

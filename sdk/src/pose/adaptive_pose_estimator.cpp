@@ -4,50 +4,18 @@
 #include <cmath>
 
 #include "contact/footprint_centre.hpp"
-#include "core/error.hpp"
 #include "core/rotation.hpp"
+#include "pose/anchored_fit.hpp"
 #include "pose/centroid_motion.hpp"
-#include "pose/rigid_fit.hpp"
+#include "pose/contact_cap.hpp"
 
 namespace onetip::pose {
 
 using contact::MarkerLabel;
 
-std::string_view toString(PoseModel m) noexcept {
-  switch (m) {
-    case PoseModel::kabsch: return "kabsch";
-    case PoseModel::stick_slip: return "stick_slip";
-    case PoseModel::centroid: return "centroid";
-    case PoseModel::none: break;
-  }
-  return "none";
-}
-
-void AdaptivePoseOptions::validate() const {
-  stick_slip.validate();
-  solver.validate();
-  auto positive = [](double v, const char* name) {
-    if (!(v > 0) || !std::isfinite(v)) throw InputError(std::string("pose options: ") + name + " must be a positive number");
-  };
-  positive(macro_drift_mm, "macro_drift_mm");
-  positive(macro_tilt_gate_deg, "macro_tilt_gate_deg");
-  positive(macro_size_change, "macro_size_change");
-  positive(macro_drift_ratio, "macro_drift_ratio");
-  positive(macro_exit_lag_mm, "macro_exit_lag_mm");
-  positive(robust_scale_mm, "robust_scale_mm");
-  positive(position_noise_mm, "position_noise_mm");
-  if (!(rotation_significance >= 0)) throw InputError("pose options: rotation_significance must not be negative");
-  positive(min_rotation_spread_mm, "min_rotation_spread_mm");
-  if (macro_confirm_frames < 1) throw InputError("pose options: macro_confirm_frames must be at least 1");
-  if (min_macro_markers < 1) throw InputError("pose options: min_macro_markers must be at least 1");
-  positive(max_step_mm, "max_step_mm");
-  positive(max_step_deg, "max_step_deg");
-  if (macro_exit_window < 2) throw InputError("pose options: macro_exit_window must be at least 2");
-}
-
-AdaptivePoseEstimator::AdaptivePoseEstimator(AdaptivePoseOptions options)
-    : options_(options), classifier_(options.stick_slip) {
+AdaptivePoseEstimator::AdaptivePoseEstimator(AdaptivePoseOptions options) : options_(options) {
   options_.validate();
+  t_ = deriveThresholds(options_, SensorSelf{});
 }
 
 void AdaptivePoseEstimator::reset() {
@@ -97,68 +65,16 @@ PoseStep AdaptivePoseEstimator::start(const contact::ContactField& field, const 
 
 namespace {
 
-// Fit of the anchored markers `ids` (references T a_i) to their positions now,
-// trimmed of markers that drift from their anchors by more than the slip
-// threshold, lagging ones first (rigid_fit.hpp; a marker relaxes along minus
-// its tangential displacement u_t): robust Kabsch when the kept markers spread
-// enough to fix a rotation, else translation only. `ids` becomes the kept set.
-RigidFit fitAnchored(const contact::StickSlipClassifier& classifier, const contact::ContactField& field,
-                     std::vector<int>& ids, const MarkerField& now, const Eigen::Isometry3d& pose,
-                     const AdaptivePoseOptions& o, bool& rotation_supported) {
-  std::vector<Eigen::Vector3d> from, to, relax;
-  for (int id : ids) {
-    const size_t i = static_cast<size_t>(id);
-    from.push_back(pose * classifier.anchor(id));
-    to.push_back(now.position[i]);
-    const Eigen::Vector3d& u = field.displacement[i];
-    const Eigen::Vector3d& n = field.normal[i];
-    const Eigen::Vector3d tangential = u - u.dot(n) * n;
-    const double size = tangential.norm();
-    relax.push_back(size > 1e-9 ? Eigen::Vector3d(-tangential / size) : Eigen::Vector3d::Zero());
-  }
-  const TrimmedFit trimmed =
-      fitRigidMotionTrimmed(from, to, relax, o.robust_scale_mm, o.stick_slip.slip_threshold_mm);
-  if (trimmed.fit.ok) {
-    size_t kept = 0;
-    for (size_t i = 0; i < from.size(); ++i)
-      if (trimmed.inlier[i]) {
-        from[kept] = from[i];
-        to[kept] = to[i];
-        ids[kept++] = ids[i];
-      }
-    from.resize(kept);
-    to.resize(kept);
-    ids.resize(kept);
-  }
-  // Rotation noise of a fit over n points of RMS extent e: sigma_d / (e sqrt(n)),
-  // sigma_d the noise of a marker's drift (two positions); smaller rotations
-  // are not applied (a real one keeps growing against the anchors).
-  const Eigen::Vector2d spread = planarSpread(from);
-  const auto significant = [&](const RigidFit& fit, double extent) {
-    const double sigma = std::sqrt(2.0) * o.position_noise_mm / (extent * std::sqrt(static_cast<double>(from.size())));
-    return fit.ok && Eigen::AngleAxisd(fit.motion.linear()).angle() >= o.rotation_significance * sigma;
-  };
-  rotation_supported = trimmed.fit.ok && spread.x() >= o.min_rotation_spread_mm;
-  if (rotation_supported && significant(trimmed.fit, spread.x())) return trimmed.fit;
-  rotation_supported = false;
-  if (spread.x() < o.min_rotation_spread_mm && spread.y() >= o.min_rotation_spread_mm) {
-    // A stick set along a line (a small contact twisting about its centre).
-    const RigidFit yaw = fitRotationAboutZ(from, to);
-    if (significant(yaw, spread.y())) return yaw;
-  }
-  return fitTranslation(from, to);
-}
-
-RigidFit fitConsecutive(const std::vector<int>& members, const MarkerField& before, const MarkerField& now,
-                        bool translation_only = false) {
-  std::vector<Eigen::Vector3d> from, to;
+ContactCap capOf(const contact::ContactField& field, const std::vector<int>& members, const MarkerField& now) {
+  std::vector<Eigen::Vector3d> p;
+  std::vector<double> n;
   for (int id : members) {
     const size_t i = static_cast<size_t>(id);
-    if (!before.valid[i] || !now.valid[i]) continue;
-    from.push_back(before.position[i]);
-    to.push_back(now.position[i]);
+    if (!now.valid[i] || !field.valid[i]) continue;
+    p.push_back(now.position[i]);
+    n.push_back(-field.displacement[i].z());
   }
-  return translation_only ? fitTranslation(from, to) : fitRigidMotion(from, to);
+  return fitContactCap(p, n, field.region_cut_mm);
 }
 
 double tiltBetween(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b) {
@@ -181,19 +97,18 @@ Eigen::Isometry3d AdaptivePoseEstimator::solveIncrement(const contact::ContactFi
     return centroid_step;
   }
   if (policy == ModelPolicy::kabsch_only) {
-    const RigidFit fit = fitConsecutive(members, before, now);
+    const RigidFit fit = fitConsecutive(members, before, now, 0);
     step.model = fit.ok ? PoseModel::kabsch : PoseModel::centroid;
     step.solver_failed = !fit.ok;
     if (fit.ok) classifier_.classify(now, field.normal, fit.motion * pose_);
     return fit.ok ? fit.motion : centroid_step;
   }
 
-  bool rotation_supported = false;
   std::vector<int> stick_ids = classifier_.withLabel(MarkerLabel::stick);
-  RigidFit fit = fitAnchored(classifier_, field, stick_ids, now, pose_, options_, rotation_supported);
-  if (fit.ok && classifier_.classify(now, field.normal, fit.motion * pose_) > 0) {
+  AnchoredFit af = fitAnchored(classifier_, field, stick_ids, now, pose_, t_, options_.rotation_significance);
+  if (af.fit.ok && classifier_.classify(now, field.normal, af.fit.motion * pose_) > 0) {
     stick_ids = classifier_.withLabel(MarkerLabel::stick);
-    fit = fitAnchored(classifier_, field, stick_ids, now, pose_, options_, rotation_supported);
+    af = fitAnchored(classifier_, field, stick_ids, now, pose_, t_, options_.rotation_significance);
   }
   std::vector<StickCorrespondence> stick;
   for (int id : stick_ids)
@@ -203,21 +118,36 @@ Eigen::Isometry3d AdaptivePoseEstimator::solveIncrement(const contact::ContactFi
     const size_t i = static_cast<size_t>(id);
     if (before.valid[i] && field.normal_valid[i]) slip.push_back({before.position[i], now.position[i], field.normal[i]});
   }
-  const int ns = static_cast<int>(stick.size()), nl = static_cast<int>(slip.size());
-  if (!stickSlipSolvable(ns, nl) || !fit.ok) {
-    // Eq. 16 fails: macroscopic slip when the contact is developed enough to tell.
-    step.model = PoseModel::centroid;
-    if (policy == ModelPolicy::adaptive && ns + nl >= options_.min_macro_markers) enterMacroSlip(now, centroid_step);
-    return centroid_step;
+  ModelEvidence evidence;
+  evidence.stick_fit_ok = af.fit.ok;
+  evidence.rotation_supported = af.rotation_supported;
+  evidence.n_stick = static_cast<int>(stick.size());
+  evidence.n_slip = static_cast<int>(slip.size());
+  step.model = selectModel(evidence, policy);
+  if (step.model == PoseModel::kabsch) return af.fit.motion;
+  if (step.model == PoseModel::stick_slip) {
+    const StickSlipSolution sol = solveStickSlipMotion(stick, slip, af.fit.motion, options_.solver);
+    step.model = sol.ok ? PoseModel::stick_slip : PoseModel::centroid;
+    step.solver_failed = !sol.ok;
+    return sol.ok ? sol.motion : centroid_step;
   }
-  if ((nl == 0 && policy == ModelPolicy::adaptive) || !rotation_supported) {
-    step.model = PoseModel::kabsch;
-    return fit.motion;
+  // Eq. 16 fails: on a developed contact, macroscopic slip. Unless the
+  // markers' own rigid motion since the last frame turns the finger (beyond
+  // the tilt gate over the window, where the footprint test cannot decide):
+  // then the stick set was too thin to follow a turn about its own line (a
+  // plate's edge strip as it tilts), the markers' rigid motion is the
+  // finger's, and they stick again.
+  if (policy == ModelPolicy::adaptive && evidence.n_stick + evidence.n_slip >= options_.min_macro_markers) {
+    const contact::ContactRegion& region = field.regions[static_cast<size_t>(step.region)];
+    const RigidFit rigid = fitConsecutive(members, before, now, t_.robust_mm);
+    if (rigid.ok && !footprintDrift(field, now, region, rigid.motion * pose_).decided) {
+      classifier_.markAllSticking(now, rigid.motion * pose_);
+      step.model = PoseModel::kabsch;
+      return rigid.motion;
+    }
+    enterMacroSlip(now, centroid_step);
   }
-  const StickSlipSolution sol = solveStickSlipMotion(stick, slip, fit.motion, options_.solver);
-  step.model = sol.ok ? PoseModel::stick_slip : PoseModel::centroid;
-  step.solver_failed = !sol.ok;
-  return sol.ok ? sol.motion : centroid_step;
+  return centroid_step;
 }
 
 void AdaptivePoseEstimator::enterMacroSlip(const MarkerField& now, const Eigen::Isometry3d& increment) {
@@ -227,54 +157,73 @@ void AdaptivePoseEstimator::enterMacroSlip(const MarkerField& now, const Eigen::
   classifier_.markAllSlipping(now, increment * pose_);
 }
 
-void AdaptivePoseEstimator::checkMacroSlip(const contact::ContactField& field, const MarkerField& now,
-                                           const contact::ContactRegion& region, Eigen::Isometry3d& increment) {
-  const int window = options_.macro_exit_window;
-  if (static_cast<int>(history_.size()) < window) return;
+AdaptivePoseEstimator::Drift AdaptivePoseEstimator::footprintDrift(const contact::ContactField& field,
+                                                                   const MarkerField& now,
+                                                                   const contact::ContactRegion& region,
+                                                                   const Eigen::Isometry3d& next) const {
+  Drift out;
+  const int window = t_.window_frames;
+  if (static_cast<int>(history_.size()) < window) return out;
   const Frame& old = history_[history_.size() - static_cast<size_t>(window)];
-  const Eigen::Isometry3d next = increment * pose_;
   const double size = static_cast<double>(region.markers.size());
   if (tiltBetween(next, old.pose) > options_.macro_tilt_gate_deg * kRadPerDeg ||
       std::abs(size - old.region_size) > options_.macro_size_change * old.region_size)
-    return;
-  // Where the footprint would be had it stayed fixed on the finger, and where it is.
+    return out;
+  out.decided = true;
+  // Where the footprint would be had it stayed fixed on the finger (carried by
+  // the motion, plus the shift rho by which a rolling finger moves its own
+  // footprint, contact_cap.hpp), and where it is. Any error of rho counts in
+  // the finger's favour: a nearly flat cap (a plate) has so large a radius
+  // that no drift can be told from its tilt.
   const auto [before, after] = commonFootprints(old, field, region.markers, now);
-  Eigen::Vector3d drift = after - next * old.pose.inverse() * before;
+  const Eigen::Isometry3d motion = next * old.pose.inverse();
+  const Eigen::AngleAxisd turn(motion.linear());
+  const Eigen::Vector2d rho = rollingShift(capOf(field, region.markers, now), turn.angle() * turn.axis());
+  out.drift = after - motion * before;
   Eigen::Vector3d travel = after - before;
-  drift.z() = 0;
+  out.drift.z() = 0;
   travel.z() = 0;
-  if (drift.norm() <= std::max(options_.macro_drift_mm, options_.macro_drift_ratio * travel.norm())) {
+  out.drift.head<2>() -= rho;
+  out.exceeds =
+      out.drift.norm() > std::max(t_.macro_drift_mm, options_.macro_drift_ratio * travel.norm()) + rho.norm();
+  return out;
+}
+
+void AdaptivePoseEstimator::checkMacroSlip(const contact::ContactField& field, const MarkerField& now,
+                                           const contact::ContactRegion& region, Eigen::Isometry3d& increment) {
+  const Drift d = footprintDrift(field, now, region, increment * pose_);
+  if (!d.exceeds) {
     macro_suspect_frames_ = 0;
     return;
   }
   // A drift seen in consecutive frames: a footprint jittering because markers
   // come and go is not mistaken for the finger sliding away.
-  if (++macro_suspect_frames_ < options_.macro_confirm_frames) return;
+  if (++macro_suspect_frames_ < options_.macro_confirm) return;
   // The finger slides while the markers stay behind: catch up once, then follow the footprint.
   Eigen::Isometry3d catch_up = Eigen::Isometry3d::Identity();
-  catch_up.translation() = drift;
+  catch_up.translation() = d.drift;
   increment = catch_up * increment;
   enterMacroSlip(now, increment);
 }
 
 bool AdaptivePoseEstimator::macroSlipEnded(const contact::ContactField& field, const std::vector<int>& members,
                                            const MarkerField& now) const {
-  const int window = options_.macro_exit_window;
+  const int window = t_.window_frames;
   if (macro_frames_ < window || static_cast<int>(history_.size()) < window) return false;
   const Frame& old = history_[history_.size() - static_cast<size_t>(window)];
-  const RigidFit fit = fitConsecutive(members, old.markers, now);
+  const RigidFit fit = fitConsecutive(members, old.markers, now, 0);
   if (!fit.ok) return false;
   const auto [before, after] = commonFootprints(old, field, members, now);
   Eigen::Vector3d lag = after - fit.motion * before;
   lag.z() = 0;
-  return lag.norm() < options_.macro_exit_lag_mm;
+  return lag.norm() < t_.macro_exit_lag_mm;
 }
 
 void AdaptivePoseEstimator::remember(const contact::ContactField& field, const MarkerField& now,
                                      const contact::ContactRegion& region) {
   history_.push_back({now, field.displacement, field.region_cut_mm, region.markers, region.footprint_centre, pose_,
                       static_cast<double>(region.markers.size())});
-  while (static_cast<int>(history_.size()) > options_.macro_exit_window) history_.pop_front();
+  while (static_cast<int>(history_.size()) > t_.window_frames) history_.pop_front();
 }
 
 std::pair<Eigen::Vector3d, Eigen::Vector3d> AdaptivePoseEstimator::commonFootprints(
@@ -302,7 +251,7 @@ Eigen::Isometry3d AdaptivePoseEstimator::centroidStep(const contact::ContactFiel
                                                       const MarkerField& now) const {
   if (!macro_slip_ && static_cast<int>(members.size()) < options_.min_macro_markers) {
     // A small contact's footprint is too coarse: its markers' mean motion.
-    const RigidFit fit = fitConsecutive(members, history_.back().markers, now, true);
+    const RigidFit fit = fitConsecutive(members, history_.back().markers, now, 0, true);
     if (fit.ok) return fit.motion;
   }
   const auto [before, after] = commonFootprints(history_.back(), field, members, now);
@@ -314,8 +263,8 @@ Eigen::Isometry3d AdaptivePoseEstimator::limitStep(const Eigen::Isometry3d& incr
   const Eigen::Vector3d d = increment * c - c;
   const Eigen::AngleAxisd aa(increment.linear());
   double s = 1;
-  if (d.norm() > options_.max_step_mm) s = std::min(s, options_.max_step_mm / d.norm());
-  if (aa.angle() > options_.max_step_deg * kRadPerDeg) s = std::min(s, options_.max_step_deg * kRadPerDeg / aa.angle());
+  if (d.norm() > t_.max_step_mm) s = std::min(s, t_.max_step_mm / d.norm());
+  if (aa.angle() > t_.max_step_rad) s = std::min(s, t_.max_step_rad / aa.angle());
   limited = s < 1;
   if (!limited) return increment;
   Eigen::Isometry3d out = Eigen::Isometry3d::Identity();
@@ -324,15 +273,23 @@ Eigen::Isometry3d AdaptivePoseEstimator::limitStep(const Eigen::Isometry3d& incr
   return out;
 }
 
-PoseStep AdaptivePoseEstimator::update(const contact::ContactField& field, const MarkerField& now) {
+PoseStep AdaptivePoseEstimator::update(const contact::ContactField& field, const MarkerField& now,
+                                       const SensorSelf& self) {
   if (!field.in_contact || field.status != contact::ContactFieldStatus::ok) {
     reset();
     return {};
   }
-  if (!active_) return start(field, now);
+  t_ = deriveThresholds(options_, self);
+  classifier_.setOptions({t_.slip_mm, t_.stick_hold_frames});
+  if (!active_) {
+    PoseStep first = start(field, now);
+    first.thresholds = t_;
+    return first;
+  }
 
   PoseStep step;
   step.active = true;
+  step.thresholds = t_;
   step.onset_centroid = c0_;
   step.region = trackedRegion(field);
   const contact::ContactRegion& region = field.regions[static_cast<size_t>(step.region)];

@@ -1,23 +1,16 @@
 // pose/adaptive_pose_estimator.hpp — the finger's motion from the contact
 // markers, choosing the cheapest model the contact state supports.
 //
-// Per frame k in contact (S, mm; rotations in radians):
+// Per frame k in contact (S, mm; rotations in radians), with every threshold
+// derived from what the sensor measures about itself (noise, pitch, frame
+// interval; pose/adaptive_pose_options.hpp):
 //  1. Stick/slip labels (contact/stick_slip_classifier.hpp) against the trial
 //     motion dT0 = Kabsch(T_{k-1} a_i -> p_i) over the sticking markers,
 //     whose references are their anchors a_i carried by the previous pose
 //     estimate T_{k-1} (so measurement noise does not accumulate frame to
-//     frame), trimmed of markers drifting beyond the slip threshold, the ones
-//     lagging back towards their rest position first (rigid_fit.hpp: a ring
-//     of markers starting to slip would otherwise drag the fit until the
-//     sticking core looks like the outlier). The kept markers are the stick
-//     set of step 2. A kept set whose x-y spread (smaller principal extent)
-//     is below min_rotation_spread_mm gives a rotation about S.z only when
-//     it is long enough (a line of markers: the centre of a small twisting
-//     contact), else a translation only; a fitted rotation smaller than
-//     rotation_significance times its noise sqrt(2) sigma_p / (extent sqrt(n))
-//     is not applied: a real rotation keeps growing against the anchors until
-//     it is significant, noise does not.
-//  2. The increment dT_k = T_k T_{k-1}^-1 from
+//     frame), trimmed and robust (pose/anchored_fit.hpp, which also says
+//     what a thin stick set can fix). The kept markers are the stick set.
+//  2. The increment dT_k = T_k T_{k-1}^-1 from the model pose/model_selection.hpp picks:
 //       full stick (no slipping marker)      -> Kabsch / Umeyama (rigid_fit.hpp, Eq. 1);
 //       partial slip (Eq. 16 holds)          -> Ceres stick/slip least squares (Eq. 13-15);
 //       Eq. 16 fails (macroscopic slip)      -> motion of the footprint centroid
@@ -27,70 +20,41 @@
 //     between models never makes the output jump.
 //  3. Macroscopic slip is entered when Eq. 16 fails on a developed contact
 //     (at least min_macro_markers region markers) and is held (hysteresis)
-//     until, over macro_exit_window frames, the markers' rigid motion carries
-//     the footprint with them again (lag < macro_exit_lag_mm): sliding markers
+//     until, over the window, the markers' rigid motion carries the footprint
+//     with them again (lag below the exit lag): sliding markers
 //     that creep slower than the slip threshold cannot pull the estimate back
 //     to a stick model that would stall. A slow slide whose markers never
 //     cross the threshold is caught from the footprint: while the finger
 //     sticks, the pressure footprint is carried by the finger. Over the last
-//     macro_exit_window frames the measured footprint centre is compared with
+//     window the measured footprint centre is compared with
 //     where the estimated finger motion would have carried it; a drift above
-//     macro_drift_mm and above macro_drift_ratio of the footprint's own travel
+//     the drift floor and above macro_drift_ratio of the footprint's own travel
 //     means the finger slides while the markers stay behind (in partial slip
 //     the footprint leads the finger by ~20% of the travel in the simulator,
 //     at gross slip the stalled estimate loses all of it), in
-//     macro_confirm_frames consecutive frames (a footprint jittering because
+//     macro_confirm consecutive frames (a footprint jittering because
 //     markers are lost is not a slide). T_k then catches
 //     up by the drift once and the centroid model takes over. No decision is
 //     taken while the region size changes by macro_size_change or the finger
 //     tilts by macro_tilt_gate_deg within the window (rolling and pitching
 //     move the footprint over the finger legitimately).
-//  4. Safety: one frame's increment is limited to max_step_mm of motion of the
-//     contact point and max_step_deg of rotation (scaled down, direction kept).
+//  4. Safety: one frame's increment is limited to max_speed_mm_s of motion of
+//     the contact point and max_rate_deg_s of rotation times the frame
+//     interval (scaled down, direction kept).
 #pragma once
 
 #include <Eigen/Geometry>
 #include <deque>
-#include <string_view>
 #include <utility>
 
 #include "contact/contact_field.hpp"
 #include "contact/stick_slip_classifier.hpp"
 #include "core/marker_field.hpp"
 #include "onetip/types.hpp"
-#include "pose/stick_slip_solver.hpp"
+#include "pose/adaptive_pose_options.hpp"
+#include "pose/model_selection.hpp"
 
 namespace onetip::pose {
-
-enum class PoseModel : std::uint8_t { none = 0, kabsch, stick_slip, centroid };
-std::string_view toString(PoseModel m) noexcept;
-
-// adaptive: the estimator above. The others force one model for every frame
-// (for comparisons): kabsch_only is the paper's Eq. 1 between consecutive
-// frames over all region markers; stick_slip_only runs Ceres even at full
-// stick; centroid_only uses the footprint centroid throughout.
-enum class ModelPolicy : std::uint8_t { adaptive = 0, kabsch_only, stick_slip_only, centroid_only };
-
-struct AdaptivePoseOptions {
-  contact::StickSlipOptions stick_slip;
-  StickSlipSolverOptions solver;
-  ModelPolicy policy = ModelPolicy::adaptive;
-  double position_noise_mm = 0.0006;    // per-axis noise of a marker position (vision front end)
-  double rotation_significance = 1.0;   // a rotation below this many noise sigmas is not applied
-  double robust_scale_mm = 0.005;       // Cauchy scale of the stick fit
-  double min_rotation_spread_mm = 0.6;  // smaller stick sets give translation only
-  int min_macro_markers = 15;           // smaller regions never declare macroscopic slip
-  double macro_drift_mm = 0.08;         // footprint drift off the finger over the window...
-  double macro_drift_ratio = 0.35;      // ...and this fraction of the footprint's travel
-  double macro_tilt_gate_deg = 1.5;
-  double macro_size_change = 0.3;     // no decision while the region size changes this fraction
-  int macro_exit_window = 5;
-  int macro_confirm_frames = 2;       // consecutive frames the drift must be seen
-  double macro_exit_lag_mm = 0.06;
-  double max_step_mm = 1.5;
-  double max_step_deg = 6.0;
-  void validate() const;  // throws InputError naming the bad field
-};
 
 struct PoseStep {
   bool active = false;           // in contact and tracking
@@ -104,6 +68,7 @@ struct PoseStep {
   Eigen::Isometry3d increment = Eigen::Isometry3d::Identity();  // T_k T_{k-1}^-1
   Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();       // T_k, since onset
   Eigen::Vector3d onset_centroid{0, 0, 0};                      // c0 (S, mm)
+  EstimatorThresholds thresholds;                               // in force this frame
   std::vector<contact::MarkerLabel> labels;  // per marker id: outside, stick or slip
 };
 
@@ -111,8 +76,9 @@ class AdaptivePoseEstimator {
  public:
   explicit AdaptivePoseEstimator(AdaptivePoseOptions options = {});
   void reset();
-  // `field` from ContactAnalyzer::analyze(now_S, rest_S).
-  PoseStep update(const contact::ContactField& field, const MarkerField& now_S);
+  // `field` from ContactAnalyzer::analyze(now_S, rest_S); `self` what the
+  // sensor has measured about itself so far (noise, pitch, frame interval).
+  PoseStep update(const contact::ContactField& field, const MarkerField& now_S, const SensorSelf& self);
   const contact::StickSlipClassifier& classifier() const { return classifier_; }
   const AdaptivePoseOptions& options() const { return options_; }
 
@@ -129,6 +95,13 @@ class AdaptivePoseEstimator {
   int trackedRegion(const contact::ContactField& field) const;
   PoseStep start(const contact::ContactField& field, const MarkerField& now);
   Eigen::Isometry3d solveIncrement(const contact::ContactField& field, const MarkerField& now, PoseStep& step);
+  struct Drift {
+    Eigen::Vector3d drift{0, 0, 0};  // footprint off the finger over the window (S.x, S.y; mm)
+    bool decided = false;            // the finger neither turned nor the region resized beyond the gates
+    bool exceeds = false;            // decided, and beyond the tolerance
+  };
+  Drift footprintDrift(const contact::ContactField& field, const MarkerField& now,
+                       const contact::ContactRegion& region, const Eigen::Isometry3d& next_pose) const;
   void checkMacroSlip(const contact::ContactField& field, const MarkerField& now, const contact::ContactRegion& region,
                       Eigen::Isometry3d& increment);
   void enterMacroSlip(const MarkerField& now, const Eigen::Isometry3d& increment);
@@ -142,6 +115,7 @@ class AdaptivePoseEstimator {
   Eigen::Isometry3d limitStep(const Eigen::Isometry3d& increment, bool& limited) const;
 
   AdaptivePoseOptions options_;
+  EstimatorThresholds t_;                    // of the frame being processed
   contact::StickSlipClassifier classifier_;
   bool active_ = false;
   bool macro_slip_ = false;

@@ -4,7 +4,7 @@
 // pad from inside (from -z in S). Each renders a view_width x view_height
 // grey half-image; the halves sit side by side in one frame (left first),
 // each optionally mirrored horizontally (mirror optics), exactly as the
-// calibration file of CONVENTIONS.md describes. camera_from_sensor maps a
+// calibration file of docs/reference.md describes. camera_from_sensor maps a
 // point in the sensor frame S (mm) to the camera frame (x right, y down,
 // z forward, mm).
 #pragma once
@@ -47,7 +47,7 @@ struct CameraRig {
   // image x along +S.x and image y along +S.y (so rows grow with S.y).
   static CameraRig fromOptions(const CameraRigOptions& o);
 
-  // The exact calibration of this rig in the file format of CONVENTIONS.md.
+  // The exact calibration of this rig in the file format of docs/reference.md.
   StereoCalibration calibration() const;
   // X_L = left_from_sensor * X_S (the ground-truth S of the SDK is then
   // recovered from the rest markers, not from this).

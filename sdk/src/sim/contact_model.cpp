@@ -1,8 +1,10 @@
 #include "sim/contact_model.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/error.hpp"
+#include "sim/contact_kernel.hpp"
 
 namespace onetip::sim {
 
@@ -41,14 +43,14 @@ ContactModel::ContactModel(const PadLattice& lattice, std::vector<IndenterGeomet
   if (indenters_.empty()) throw InputError("contact model: needs at least one indenter");
   for (const auto& g : indenters_) g.validate();
   const int nu = lattice_.nu(), nv = lattice_.nv();
-  const double h = lattice_.spacing(), decay = lattice_.options().thickness_mm;
+  const PadOptions& pad = lattice_.options();
+  const double h = lattice_.spacing();
   kernel_table_.resize(static_cast<size_t>((2 * nu - 1) * (2 * nv - 1)));
   for (int db = -(nv - 1); db <= nv - 1; ++db)
-    for (int da = -(nu - 1); da <= nu - 1; ++da) {
-      const double r = h * std::hypot(da, db);
-      const double k = r == 0 ? 4.0 * std::log(1.0 + std::sqrt(2.0)) * h : h * h * std::exp(-r / decay) / r;
-      kernel_table_[static_cast<size_t>((db + nv - 1) * (2 * nu - 1) + (da + nu - 1))] = k;
-    }
+    for (int da = -(nu - 1); da <= nu - 1; ++da)
+      kernel_table_[static_cast<size_t>((db + nv - 1) * (2 * nu - 1) + (da + nu - 1))] = contactKernel(pad, h, da, db);
+  c_t_ = tangentialComplianceRatio(pad.contact_model);
+  kinetic_ratio_ = pad.contact_model == ContactModelKind::foundation ? pad.kinetic_ratio : 1.0;
   nodes_.resize(static_cast<size_t>(lattice_.nodeCount()));
   kernel_base_.resize(nodes_.size());
   kernel_offset_.resize(nodes_.size());
@@ -93,7 +95,9 @@ ContactStepStats ContactModel::advance(const std::vector<Eigen::Isometry3d>& pos
   double bound = 0;
   for (size_t k = 0; k < poses.size(); ++k)
     bound = std::max(bound, motionBound(poses_[k], poses[k], std::min(footprintRadius(indenters_[k]), 12.0)));
-  const int substeps = std::max(1, static_cast<int>(std::ceil(bound / max_substep_mm_)));
+  // Sub-steps of at most max_substep_mm each, but never more than
+  // kMaxSubsteps per frame (a motion of metres in one frame is not a touch).
+  const int substeps = static_cast<int>(std::clamp(std::ceil(bound / max_substep_mm_), 1.0, double(kMaxSubsteps)));
   const std::vector<Eigen::Isometry3d> start = poses_;
   std::vector<Eigen::Isometry3d> now(poses.size());
   for (int s = 1; s <= substeps; ++s) {
@@ -148,6 +152,10 @@ void ContactModel::solve(const std::vector<Eigen::Isometry3d>& poses) {
     candidates.push_back(i);
   }
 
+  // Which nodes were slipping at the end of the last sub-step (kinetic friction).
+  std::vector<char> was_slipping(static_cast<size_t>(n_nodes), 0);
+  for (int i : active_) was_slipping[static_cast<size_t>(i)] = nodes_[static_cast<size_t>(i)].slip ? 1 : 0;
+
   // 2. Normal contact: conform on the active set, drop nodes that would pull.
   std::vector<int> A = candidates;
   Eigen::VectorXd p;
@@ -191,7 +199,7 @@ void ContactModel::solve(const std::vector<Eigen::Isometry3d>& poses) {
     Eigen::MatrixX2d rhs(ns, 2);
     for (int a = 0; a < ns; ++a) {
       const int ia = A[static_cast<size_t>(S[static_cast<size_t>(a)])];
-      rhs.row(a) = target[static_cast<size_t>(ia)].transpose() / kTangentialComplianceRatio;
+      rhs.row(a) = target[static_cast<size_t>(ia)].transpose() / c_t_;
       for (int r = 0; r < n; ++r)
         if (slipping[static_cast<size_t>(r)]) rhs.row(a) -= kernel(ia, A[static_cast<size_t>(r)]) * q.row(r);
     }
@@ -201,7 +209,9 @@ void ContactModel::solve(const std::vector<Eigen::Isometry3d>& poses) {
     bool changed = false;
     for (int a = 0; a < ns; ++a) {
       const int r = S[static_cast<size_t>(a)];
-      const double limit = mu * nodes_[static_cast<size_t>(A[static_cast<size_t>(r)])].p;
+      const int node = A[static_cast<size_t>(r)];
+      const double limit = mu * (was_slipping[static_cast<size_t>(node)] ? kinetic_ratio_ : 1.0) *
+                           nodes_[static_cast<size_t>(node)].p;
       q.row(r) = qs.row(a);
       const double norm = qs.row(a).norm();
       if (norm > limit * (1 + 1e-9)) {
@@ -243,8 +253,8 @@ void ContactModel::gatherActiveTractions() {
   for (size_t r = 0; r < n; ++r) {
     const auto& c = nodes_[static_cast<size_t>(active_[r])];
     active_offset_[r] = kernel_offset_[static_cast<size_t>(active_[r])];
-    active_wx_[r] = kTangentialComplianceRatio * c.q.x();
-    active_wy_[r] = kTangentialComplianceRatio * c.q.y();
+    active_wx_[r] = c_t_ * c.q.x();
+    active_wy_[r] = c_t_ * c.q.y();
     active_wz_[r] = -c.p;
   }
 }

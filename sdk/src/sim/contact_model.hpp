@@ -1,15 +1,12 @@
 // sim/contact_model.hpp — quasi-static contact mechanics of the pad, step by step.
 //
-// Elastic layer (boundary-element form, Goodman's uncoupling, exact for an
-// incompressible skin, nu = 0.5): a surface traction (q_x, q_y, p) on node j
-// displaces node i by K(r_ij) * (c_t q_x, c_t q_y, -p), where
-// c_t = (2 - nu) / (2 - 2 nu) = 1.5 is the half-space's tangential-to-normal
-// compliance ratio (Cerruti over Boussinesq, averaged over direction), with
-//     K(r) = h^2 exp(-r / T) / r   (r > 0),   K(0) = 4 ln(1 + sqrt 2) h,
-// the Boussinesq point-load response of a half-space (the self term is the exact
-// integral over one h x h cell) damped over the layer thickness T, which the
-// rigid base limits. Tractions are in units of compliance (mm), so only ratios
-// matter and no Young's modulus is needed for kinematics.
+// Layer response (boundary-element form): a surface traction (q_x, q_y, p) on
+// node j displaces node i by K(r_ij) * (c_t q_x, c_t q_y, -p), with the kernel K
+// and the tangential-to-normal compliance ratio c_t of the pad's contact model
+// (sim/contact_kernel.hpp: halfspace, the Boussinesq response of an
+// incompressible layer damped over its thickness, c_t = 1.5; or foundation, a
+// Pasternak foundation, c_t = 1.0). Tractions are in units of compliance (mm),
+// so only ratios matter and no Young's modulus is needed for kinematics.
 //
 // Normal contact (Signorini): the active set A holds the nodes the indenter
 // penetrates; on A the surface conforms to the indenter, K_AA p = delta, and
@@ -19,14 +16,17 @@
 // touches. A stick node's tangential displacement is prescribed by its anchor's
 // current position; the traction it needs must satisfy |q| <= mu p, else the
 // node slips, carries |q| = mu p along its trial traction, and is re-anchored
-// where it ends up. Slip starts at the contact edge (where p -> 0) and the stick
+// where it ends up. In the foundation model friction is static/kinetic: a node
+// that slipped in the previous sub-step is bounded by kinetic_ratio * mu p
+// (it keeps slipping until its stick traction falls below that). Slip starts at the contact edge (where p -> 0) and the stick
 // region shrinks inwards; when no node can stick the contact slides as a whole.
-// Prediction (Ciavarella-Jager superposition, exact for this uncoupled model):
-// sliding the indenter by s at constant approach delta, the stick region is the
-// contact region at approach delta - s / (mu c_t), and gross slip starts at
-// s = mu c_t delta (1.5 mm at delta = 1 mm, mu = 1).
+// Prediction (Ciavarella-Jager superposition, exact for the uncoupled
+// halfspace model): sliding the indenter by s at constant approach delta, the
+// stick region is the contact region at approach delta - s / (mu c_t), and
+// gross slip starts at s = mu c_t delta (1.5 mm at delta = 1 mm, mu = 1).
 // History lives in the anchors, so the model must be advanced step by step;
-// advance() sub-steps so no indenter point moves more than max_substep_mm.
+// advance() sub-steps so no indenter point moves more than max_substep_mm
+// (at most kMaxSubsteps sub-steps per call: 1000 x 0.1 mm = 10 cm per frame).
 #pragma once
 
 #include <Eigen/Cholesky>
@@ -38,6 +38,8 @@
 #include "sim/pad.hpp"
 
 namespace onetip::sim {
+
+constexpr int kMaxSubsteps = 1000;
 
 struct NodeContact {
   bool contact = false;
@@ -53,8 +55,6 @@ struct ContactStepStats {
   int slip_nodes = 0;
   int substeps = 0;
 };
-
-constexpr double kTangentialComplianceRatio = 1.5;
 
 class ContactModel {
  public:
@@ -95,6 +95,8 @@ class ContactModel {
   const PadLattice& lattice_;
   std::vector<IndenterGeometry> indenters_;
   double max_substep_mm_;
+  double c_t_ = 1.5;            // tangential-to-normal compliance ratio of the model
+  double kinetic_ratio_ = 1.0;  // bound of a slipping node, relative to mu p
   std::vector<double> kernel_table_;  // by lattice offset (da, db)
   // kernel(i, j) = kernel_table_[kernel_base_[i] - kernel_offset_[j]]
   std::vector<int> kernel_base_, kernel_offset_;

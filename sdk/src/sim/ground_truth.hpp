@@ -1,6 +1,6 @@
 // sim/ground_truth.hpp — the simulator's exact answer for every frame.
 //
-// The 6-D ground truth follows CONVENTIONS.md using the SDK's own contact rule
+// The 6-D ground truth follows docs/reference.md using the SDK's own contact rule
 // applied to the exact marker field, so that a perfect measurement reproduces
 // it: the pad is "in contact" while the largest marker deformation modulus
 // exceeds contact_threshold_mm (0.1 mm); at onset T_onset is the finger's pose

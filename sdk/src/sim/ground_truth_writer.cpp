@@ -1,11 +1,10 @@
 #include "sim/ground_truth_writer.hpp"
 
-#include <unistd.h>
-
 #include <cstdio>
 #include <filesystem>
 #include <opencv2/imgcodecs.hpp>
 
+#include "core/atomic_file.hpp"
 #include "core/csv_table.hpp"
 #include "core/error.hpp"
 
@@ -19,35 +18,20 @@ std::string frameName(int index) {
   std::snprintf(buf, sizeof buf, "%06d.png", index);
   return buf;
 }
-
-// Removes the staging folder unless the run completed.
-struct StagingDir {
-  fs::path path;
-  bool keep = false;
-  ~StagingDir() {
-    if (!keep) {
-      std::error_code ec;
-      fs::remove_all(path, ec);
-    }
-  }
-};
 }  // namespace
 
 void writeSimulation(Simulator& sim, const std::string& out_dir, const WriteOptions& options) {
-  const fs::path target(out_dir);
-  if (fs::exists(target) && !(fs::is_directory(target) && (fs::is_empty(target) || fs::exists(target / "gt_pose.csv"))))
-    throw InputError(out_dir + ": exists and is not an earlier simulator output; choose another --out");
-  StagingDir staging{fs::path(out_dir + ".tmp." + std::to_string(::getpid()))};
+  AtomicDir staging(out_dir);
+  const fs::path dir(staging.path());
   std::error_code ec;
-  fs::remove_all(staging.path, ec);
-  if (!fs::create_directories(staging.path / "frames", ec) || ec)
+  if (!fs::create_directory(dir / "frames", ec) || ec)
     throw InputError(out_dir + ": cannot create the output folder (" + ec.message() + ")");
 
-  saveCalibration(sim.calibration(), (staging.path / "calib.yaml").string());
-  savePattern(sim.pattern(), (staging.path / "pattern.yaml").string());
-  CsvWriter pose((staging.path / "gt_pose.csv").string(),
+  saveCalibration(sim.calibration(), (dir / "calib.yaml").string());
+  savePattern(sim.pattern(), (dir / "pattern.yaml").string());
+  CsvWriter pose((dir / "gt_pose.csv").string(),
                  {"frame", "contact", "state", "dx", "dy", "dz", "yaw", "pitch", "roll"});
-  CsvWriter markers((staging.path / "gt_markers.csv").string(), {"frame", "id", "x", "y", "z", "contact", "slip"});
+  CsvWriter markers((dir / "gt_markers.csv").string(), {"frame", "id", "x", "y", "z", "contact", "slip"});
   const int n = sim.frameCount();
   while (!sim.done()) {
     const GroundTruthFrame& f = sim.next();
@@ -62,17 +46,14 @@ void writeSimulation(Simulator& sim, const std::string& out_dir, const WriteOpti
                    f.slip.empty() ? "0" : std::to_string(f.slip[static_cast<size_t>(id)])});
     }
     if (!options.field_only) {
-      const std::string png = (staging.path / "frames" / frameName(f.index)).string();
+      const std::string png = (dir / "frames" / frameName(f.index)).string();
       if (!cv::imwrite(png, sim.render())) throw InputError(png + ": cannot write the frame");
     }
     if (options.on_frame) options.on_frame(f, n);
   }
   pose.commit();
   markers.commit();
-  if (fs::exists(target)) fs::remove_all(target);
-  fs::rename(staging.path, target, ec);
-  if (ec) throw InputError(out_dir + ": cannot move the output into place (" + ec.message() + ")");
-  staging.keep = true;
+  staging.commit();
 }
 
 }  // namespace onetip::sim

@@ -1,12 +1,14 @@
 // sim/ground_truth_writer.hpp — writes a simulated run to a folder
-// (CONVENTIONS.md, issue 2):
+// (docs/reference.md, issue 2):
 //   DIR/frames/000000.png ...  (unless field-only)
 //   DIR/gt_pose.csv     frame,contact,state,dx,dy,dz,yaw,pitch,roll
 //   DIR/gt_markers.csv  frame,id,x,y,z,contact,slip      (S, mm)
 //   DIR/calib.yaml, DIR/pattern.yaml
-// Everything is written into DIR.tmp.<pid> and renamed to DIR at the end, so
-// a failed run leaves no partial output. An existing DIR is replaced only if it
-// is itself a simulator output (holds gt_pose.csv), never otherwise.
+// Everything is written into a fresh DIR.tmp.<pid>.<random> (mkdtemp) and
+// renamed to DIR at the end, so a failed or interrupted run (an exception from
+// on_frame unwinds) leaves no partial output. DIR must be absent or an empty
+// folder: nothing the run did not create is ever deleted or replaced. Staging
+// folders of killed runs are removed (core/atomic_file.hpp).
 #pragma once
 
 #include <functional>

@@ -6,6 +6,16 @@
 
 namespace onetip::sim {
 
+std::string_view toString(ContactModelKind kind) noexcept {
+  return kind == ContactModelKind::foundation ? "foundation" : "halfspace";
+}
+
+std::optional<ContactModelKind> contactModelFromString(std::string_view name) noexcept {
+  if (name == "halfspace") return ContactModelKind::halfspace;
+  if (name == "foundation") return ContactModelKind::foundation;
+  return std::nullopt;
+}
+
 void PadOptions::validate() const {
   pattern.validate();
   if (!(thickness_mm > 0.5) || thickness_mm > 100) throw InputError("pad: thickness_mm: must be in (0.5, 100]");
@@ -19,6 +29,9 @@ void PadOptions::validate() const {
   if (nodes_per_square < 1 || nodes_per_square > 8) throw InputError("pad: nodes_per_square: must be in 1..8");
   if (margin_squares < 1 || margin_squares > 10) throw InputError("pad: margin_squares: must be in 1..10");
   if (!(friction > 0) || friction > 5) throw InputError("pad: friction: must be in (0, 5]");
+  if (!(kinetic_ratio > 0 && kinetic_ratio <= 1)) throw InputError("pad: kinetic_ratio: must be in (0, 1]");
+  if (!(foundation_length_mm >= 0 && foundation_length_mm <= 50))
+    throw InputError("pad: foundation_length_mm: must be in [0, 50] mm (0: thickness / sqrt(3))");
 }
 
 PadLattice::PadLattice(const PadOptions& o) : options_(o) {

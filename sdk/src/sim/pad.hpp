@@ -12,15 +12,32 @@
 // x = u - (cols-1) * square / 2, y = v - (rows-1) * square / 2 and, for a flat
 // pad, the marker layer at z = 0 and the outer surface at z = marker_depth_mm.
 // P equals the sensor frame S for a flat pad; for a domed pad S is derived
-// from the rest markers as CONVENTIONS.md says (Simulator does that).
+// from the rest markers as docs/reference.md says (Simulator does that).
 #pragma once
 
 #include <Eigen/Core>
+#include <cstdint>
+#include <optional>
+#include <string_view>
 #include <vector>
 
 #include "core/pattern.hpp"
 
 namespace onetip::sim {
+
+// The two contact models of the simulator (sim/contact_kernel.hpp has the maths).
+// They differ on purpose in every part an estimator could be tuned to:
+//   halfspace:  Boussinesq/Cerruti response of an incompressible elastic layer
+//               (long-range 1/r kernel, tangential/normal compliance 1.5),
+//               Coulomb friction with one coefficient;
+//   foundation: Pasternak foundation (springs + a shear layer: short-range
+//               K0(r/l) kernel, a flatter pressure distribution and a steeper
+//               dip around the contact), compressible (tangential/normal
+//               compliance 1.0), static/kinetic friction (a slipping point
+//               carries kinetic_ratio x mu p and sticks again only below it).
+enum class ContactModelKind : std::uint8_t { halfspace = 0, foundation };
+std::string_view toString(ContactModelKind kind) noexcept;
+std::optional<ContactModelKind> contactModelFromString(std::string_view name) noexcept;
 
 struct PadOptions {
   MarkerPattern pattern;            // 17 x 17 inner corners, 1.2 mm squares
@@ -29,7 +46,10 @@ struct PadOptions {
   double dome_radius_mm = 0.0;      // 0: flat
   int nodes_per_square = 1;         // contact lattice nodes per marker spacing (1: one per marker)
   int margin_squares = 3;           // lattice beyond the outer markers
-  double friction = 1.0;            // Coulomb coefficient between finger and skin
+  double friction = 1.0;            // (static) Coulomb coefficient between finger and skin
+  ContactModelKind contact_model = ContactModelKind::halfspace;
+  double kinetic_ratio = 0.7;       // foundation model: kinetic / static friction, (0, 1]
+  double foundation_length_mm = 0;  // foundation model: shear coupling length l; 0 = thickness / sqrt(3)
   void validate() const;            // throws InputError naming the bad field
 };
 

@@ -1,5 +1,5 @@
 // sim/renderer.hpp — renders what the simulated camera sees: one 8-bit grey
-// frame holding both virtual views side by side (CONVENTIONS.md layout).
+// frame holding both virtual views side by side (docs/reference.md layout).
 //
 // Each CheckerSheet is a triangle mesh in S textured with an anti-aliased
 // checkerboard; it is projected through each VirtualCamera (with distortion),

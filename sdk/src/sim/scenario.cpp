@@ -2,165 +2,193 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <set>
 
+#include "core/config_file.hpp"
 #include "core/error.hpp"
-#include "core/filestorage_io.hpp"
 #include "core/rotation.hpp"
 
 namespace onetip::sim {
 
 namespace {
 
-// A FileStorage map with the path used in error messages and a set of known keys.
+constexpr double kLimit = 1e6;  // beyond every scenario value's range: larger is a typo, not a setting
+
+// A map of the scenario file with its known keys. `check` runs after each
+// value is read into its options, so a value the options refuse is reported
+// at its own key and line (the defaults are valid: the first failure belongs
+// to the key just read).
 class Section {
  public:
-  Section(cv::FileNode node, std::string where, std::set<std::string> known)
-      : node_(std::move(node)), where_(std::move(where)) {
-    if (node_.empty() || node_.isNone()) return;
-    if (!node_.isMap()) throw InputError(where_ + ": expected a map");
-    for (const auto& k : node_.keys())
-      if (!known.count(k)) throw InputError(where_ + "." + k + ": unknown key");
+  Section(ConfigNode node, const std::set<std::string>& known, std::function<void()> check = {})
+      : node_(std::move(node)), check_(std::move(check)) {
+    node_.allowOnly(known);
   }
-  bool has(const std::string& key) const { return !node_.empty() && !node_[key].empty() && !node_[key].isNone(); }
-  double number(const std::string& key, double fallback) const {
-    if (!has(key)) return fallback;
-    const cv::FileNode n = node_[key];
-    if (!n.isReal() && !n.isInt()) throw InputError(where_ + "." + key + ": expected a number");
-    const double v = static_cast<double>(n);
-    if (!std::isfinite(v)) throw InputError(where_ + "." + key + ": must be finite");
-    return v;
+  ConfigNode operator[](const std::string& key) const { return node_[key]; }
+  void read(const std::string& key, double& out) const {
+    readWith(key, [&](const ConfigNode& n) { out = n.real(-kLimit, kLimit); });
   }
-  int integer(const std::string& key, int fallback) const {
-    const double v = number(key, fallback);
-    if (v != std::floor(v) || std::abs(v) > 1e7) throw InputError(where_ + "." + key + ": expected an integer");
-    return static_cast<int>(v);
+  void read(const std::string& key, int& out) const {
+    readWith(key, [&](const ConfigNode& n) { out = n.integer(-10000000, 10000000); });
   }
-  std::string text(const std::string& key, const std::string& fallback) const {
-    if (!has(key)) return fallback;
-    if (!node_[key].isString()) throw InputError(where_ + "." + key + ": expected a string");
-    return static_cast<std::string>(node_[key]);
+  void read(const std::string& key, bool& out) const {
+    readWith(key, [&](const ConfigNode& n) { out = n.flag(); });
   }
-  std::vector<double> numbers(const std::string& key, size_t count) const {
-    const cv::FileNode n = node_[key];
-    if (!n.isSeq() || n.size() != count)
-      throw InputError(where_ + "." + key + ": expected a list of " + std::to_string(count) + " numbers");
-    std::vector<double> v;
-    for (const auto& e : n) {
-      if (!e.isReal() && !e.isInt()) throw InputError(where_ + "." + key + ": expected numbers");
-      v.push_back(static_cast<double>(e));
+  // Reads `key` (when present) with `assign`, whose errors name the file,
+  // line and key (ConfigNode's do), then runs the section's check.
+  template <typename F>
+  void readWith(const std::string& key, F&& assign) const {
+    const ConfigNode n = node_[key];
+    if (!n.present()) return;
+    assign(n);
+    if (!check_) return;
+    try {
+      check_();
+    } catch (const InputError& e) {
+      n.fail(e.what());
     }
-    return v;
   }
-  const cv::FileNode& node() const { return node_; }
-  const std::string& where() const { return where_; }
 
  private:
-  cv::FileNode node_;
-  std::string where_;
+  ConfigNode node_;
+  std::function<void()> check_;
 };
 
-// Re-throws a validate() error with the file and section in front.
-template <typename F>
-void validateIn(const std::string& where, F&& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    throw InputError(where + ": " + e.what());
-  }
-}
-
-PadOptions readPad(const Section& s) {
+PadOptions readPad(const ConfigNode& node) {
   PadOptions p;
-  p.pattern.rows = s.integer("rows", p.pattern.rows);
-  p.pattern.cols = s.integer("cols", p.pattern.cols);
-  p.pattern.square_mm = s.number("square_mm", p.pattern.square_mm);
-  p.thickness_mm = s.number("thickness_mm", p.thickness_mm);
-  p.marker_depth_mm = s.number("marker_depth_mm", p.marker_depth_mm);
-  p.dome_radius_mm = s.number("dome_radius_mm", p.dome_radius_mm);
-  p.nodes_per_square = s.integer("nodes_per_square", p.nodes_per_square);
-  p.margin_squares = s.integer("margin_squares", p.margin_squares);
-  p.friction = s.number("friction", p.friction);
-  validateIn(s.where(), [&] { p.validate(); });
+  const Section s(node,
+                  {"rows", "cols", "square_mm", "thickness_mm", "marker_depth_mm", "dome_radius_mm",
+                   "nodes_per_square", "margin_squares", "friction", "contact_model", "kinetic_ratio",
+                   "foundation_length_mm"},
+                  [&] { p.validate(); });
+  s.read("rows", p.pattern.rows);
+  s.read("cols", p.pattern.cols);
+  s.read("square_mm", p.pattern.square_mm);
+  s.read("thickness_mm", p.thickness_mm);
+  s.read("marker_depth_mm", p.marker_depth_mm);
+  s.read("dome_radius_mm", p.dome_radius_mm);
+  s.read("nodes_per_square", p.nodes_per_square);
+  s.read("margin_squares", p.margin_squares);
+  s.read("friction", p.friction);
+  s.readWith("contact_model", [&](const ConfigNode& n) {
+    const std::string model = n.text();
+    const auto kind = contactModelFromString(model);
+    if (!kind) n.fail("expected 'halfspace' or 'foundation', got \"" + model + "\"");
+    p.contact_model = *kind;
+  });
+  s.read("kinetic_ratio", p.kinetic_ratio);
+  s.read("foundation_length_mm", p.foundation_length_mm);
   return p;
 }
 
-CameraRigOptions readCamera(const Section& s) {
+CameraRigOptions readCamera(const ConfigNode& node) {
   CameraRigOptions c;
-  c.view_width = s.integer("view_width", c.view_width);
-  c.view_height = s.integer("view_height", c.view_height);
-  c.focal_px = s.number("focal_px", c.focal_px);
-  c.distance_mm = s.number("distance_mm", c.distance_mm);
-  c.baseline_mm = s.number("baseline_mm", c.baseline_mm);
-  c.k1 = s.number("k1", c.k1);
-  c.k2 = s.number("k2", c.k2);
-  c.p1 = s.number("p1", c.p1);
-  c.p2 = s.number("p2", c.p2);
-  c.k3 = s.number("k3", c.k3);
-  c.flip_left = s.integer("flip_left", c.flip_left) != 0;
-  c.flip_right = s.integer("flip_right", c.flip_right) != 0;
-  validateIn(s.where(), [&] { c.validate(); });
+  const Section s(node,
+                  {"view_width", "view_height", "focal_px", "distance_mm", "baseline_mm", "k1", "k2", "p1", "p2",
+                   "k3", "flip_left", "flip_right"},
+                  [&] { c.validate(); });
+  s.read("view_width", c.view_width);
+  s.read("view_height", c.view_height);
+  s.read("focal_px", c.focal_px);
+  s.read("distance_mm", c.distance_mm);
+  s.read("baseline_mm", c.baseline_mm);
+  s.read("k1", c.k1);
+  s.read("k2", c.k2);
+  s.read("p1", c.p1);
+  s.read("p2", c.p2);
+  s.read("k3", c.k3);
+  s.read("flip_left", c.flip_left);
+  s.read("flip_right", c.flip_right);
   return c;
 }
 
-ImageEffects readImage(const Section& s) {
+ImageEffects readImage(const ConfigNode& node) {
   ImageEffects e;
-  e.noise_sigma = s.number("noise_sigma", e.noise_sigma);
-  e.blur_sigma = s.number("blur_sigma", e.blur_sigma);
-  e.vignetting = s.number("vignetting", e.vignetting);
-  e.exposure = s.number("exposure", e.exposure);
-  e.light_gradient = s.number("light_gradient", e.light_gradient);
-  e.dust_blobs = s.integer("dust_blobs", e.dust_blobs);
-  e.specular_spots = s.integer("specular_spots", e.specular_spots);
-  e.occlusion_fraction = s.number("occlusion_fraction", e.occlusion_fraction);
-  validateIn(s.where(), [&] { e.validate(); });
+  const Section s(node,
+                  {"noise_sigma", "blur_sigma", "vignetting", "exposure", "light_gradient", "dust_blobs",
+                   "specular_spots", "occlusion_fraction"},
+                  [&] { e.validate(); });
+  s.read("noise_sigma", e.noise_sigma);
+  s.read("blur_sigma", e.blur_sigma);
+  s.read("vignetting", e.vignetting);
+  s.read("exposure", e.exposure);
+  s.read("light_gradient", e.light_gradient);
+  s.read("dust_blobs", e.dust_blobs);
+  s.read("specular_spots", e.specular_spots);
+  s.read("occlusion_fraction", e.occlusion_fraction);
   return e;
 }
 
-IndenterTrack readIndenter(const cv::FileNode& node, const std::string& where) {
-  const Section s(node, where, {"shape", "semi_axes", "radius", "size", "pivot", "keyframes"});
+CalibrationTarget readTarget(const ConfigNode& node) {
+  CalibrationTarget g;
+  const Section s(node,
+                  {"rows", "cols", "square_mm", "poses", "tilt_deg", "yaw_deg", "shift_mm", "depth_min_mm",
+                   "depth_max_mm"},
+                  [&] { MarkerPattern{g.rows, g.cols, g.square_mm}.validate(); });
+  s.read("rows", g.rows);
+  s.read("cols", g.cols);
+  s.read("square_mm", g.square_mm);
+  s.readWith("poses", [&](const ConfigNode& n) { g.poses = n.integer(3, 1000); });
+  s.readWith("tilt_deg", [&](const ConfigNode& n) { g.tilt_deg = n.real(0, 60); });
+  s.read("yaw_deg", g.yaw_deg);
+  s.read("shift_mm", g.shift_mm);
+  s.read("depth_min_mm", g.depth_min_mm);
+  s.read("depth_max_mm", g.depth_max_mm);
+  if (!(g.depth_min_mm < g.depth_max_mm)) node["depth_min_mm"].fail("must be less than depth_max_mm");
+  return g;
+}
+
+IndenterTrack readIndenter(const ConfigNode& node) {
   IndenterTrack track;
   IndenterGeometry& g = track.geometry;
-  validateIn(where, [&] { g.shape = IndenterGeometry::shapeFromName(s.text("shape", "ellipsoid")); });
-  if (g.shape == IndenterShape::ellipsoid && s.has("semi_axes")) {
-    const auto a = s.numbers("semi_axes", 3);
-    g.semi_axes = {a[0], a[1], a[2]};
-  }
+  const Section s(node, {"shape", "semi_axes", "radius", "size", "pivot", "keyframes"}, [&] { g.validate(); });
+  s.readWith("shape", [&](const ConfigNode& n) {
+    try {
+      g.shape = IndenterGeometry::shapeFromName(n.text());
+    } catch (const InputError& e) {
+      n.fail(e.what());
+    }
+  });
+  if (g.shape == IndenterShape::ellipsoid)
+    s.readWith("semi_axes", [&](const ConfigNode& n) {
+      const auto a = n.reals(3, -kLimit, kLimit);
+      g.semi_axes = {a[0], a[1], a[2]};
+    });
   if (g.shape == IndenterShape::sphere) {
-    const double r = s.number("radius", 6.0);
-    g.semi_axes = {r, r, r};
+    g.semi_axes = {6.0, 6.0, 6.0};
+    s.readWith("radius", [&](const ConfigNode& n) {
+      const double r = n.real(-kLimit, kLimit);
+      g.semi_axes = {r, r, r};
+    });
   }
-  if (g.shape == IndenterShape::plate && s.has("size")) {
-    const auto a = s.numbers("size", 2);
-    g.plate_width = a[0];
-    g.plate_length = a[1];
-  }
-  validateIn(where, [&] { g.validate(); });
-  if (s.has("pivot")) {
-    const auto p = s.numbers("pivot", 3);
+  if (g.shape == IndenterShape::plate)
+    s.readWith("size", [&](const ConfigNode& n) {
+      const auto a = n.reals(2, -kLimit, kLimit);
+      g.plate_width = a[0];
+      g.plate_length = a[1];
+    });
+  // Beyond the body's own size a pivot only makes the indenter sweep the
+  // pad at huge speeds (and the contact model sub-step without end).
+  s.readWith("pivot", [&](const ConfigNode& n) {
+    const auto p = n.reals(3, -50, 50);
     track.pivot = {p[0], p[1], p[2]};
-  }
-  const cv::FileNode kf = node["keyframes"];
-  if (!kf.isSeq() || kf.size() < 1) throw InputError(where + ".keyframes: expected a list of keyframes");
+  });
+  const ConfigNode kf = s["keyframes"];
+  if (!kf.isSeq() || kf.size() < 1) kf.fail("expected a list of keyframes");
   Keyframe prev;
   for (size_t i = 0; i < kf.size(); ++i) {
-    const std::string kw = where + ".keyframes[" + std::to_string(i) + "]";
-    const Section k(kf[static_cast<int>(i)], kw, {"t", "x", "y", "depth", "yaw", "pitch", "roll"});
-    if (!k.has("t")) throw InputError(kw + ".t: missing");
+    const ConfigNode k = kf[i];
+    k.allowOnly({"t", "x", "y", "depth", "yaw", "pitch", "roll"});
     Keyframe f = prev;
-    f.t = k.number("t", 0);
-    f.x = k.number("x", prev.x);
-    f.y = k.number("y", prev.y);
-    f.depth = k.number("depth", prev.depth);
-    f.yaw = k.number("yaw", prev.yaw);
-    f.pitch = k.number("pitch", prev.pitch);
-    f.roll = k.number("roll", prev.roll);
-    if (i > 0 && !(f.t > prev.t)) throw InputError(kw + ".t: must be greater than the previous keyframe's t");
-    if (f.t < 0 || f.t > 3600) throw InputError(kw + ".t: must be in [0, 3600] s");
-    if (std::abs(f.x) > 30 || std::abs(f.y) > 30) throw InputError(kw + ".x/y: must be within +-30 mm");
-    if (f.depth > 6 || f.depth < -30) throw InputError(kw + ".depth: must be in [-30, 6] mm");
-    if (std::abs(f.yaw) > 90 || std::abs(f.pitch) > 80 || std::abs(f.roll) > 80)
-      throw InputError(kw + ": angles must be within yaw +-90, pitch and roll +-80 degrees");
+    f.t = k["t"].real(0, 3600);
+    if (i > 0 && !(f.t > prev.t)) k["t"].fail("must be greater than the previous keyframe's t");
+    f.x = k.real("x", prev.x, -30, 30);
+    f.y = k.real("y", prev.y, -30, 30);
+    f.depth = k.real("depth", prev.depth, -30, 6);
+    f.yaw = k.real("yaw", prev.yaw, -90, 90);
+    f.pitch = k.real("pitch", prev.pitch, -80, 80);
+    f.roll = k.real("roll", prev.roll, -80, 80);
     track.keyframes.push_back(f);
     prev = f;
   }
@@ -208,54 +236,29 @@ std::vector<Eigen::Isometry3d> Scenario::posesAt(double t, const PadLattice& lat
 }
 
 Scenario loadScenario(const std::string& path) {
-  cv::FileStorage fs = openForReading(path);
-  const Section root(fs.root(), path,
-                     {"name", "description", "kind", "fps", "seed", "pad", "camera", "image", "indenters", "target"});
+  const ConfigNode root = ConfigNode::load(path);
+  root.allowOnly({"name", "description", "kind", "fps", "seed", "pad", "camera", "image", "indenters", "target"});
   Scenario sc;
-  sc.name = root.text("name", "");
-  if (sc.name.empty()) throw InputError(path + ": name: missing");
+  sc.name = root["name"].text();
+  if (sc.name.empty()) root["name"].fail("must not be empty");
   sc.description = root.text("description", "");
   sc.kind = root.text("kind", "touch");
-  if (sc.kind != "touch" && sc.kind != "calibration")
-    throw InputError(path + ": kind: must be 'touch' or 'calibration'");
-  sc.fps = root.number("fps", 30);
-  if (!(sc.fps >= 1 && sc.fps <= 1000)) throw InputError(path + ": fps: must be in [1, 1000]");
-  const int seed = root.integer("seed", 1);
-  if (seed < 0) throw InputError(path + ": seed: must be >= 0");
-  sc.seed = static_cast<unsigned>(seed);
-  sc.pad = readPad(Section(fs["pad"], path + ": pad",
-                           {"rows", "cols", "square_mm", "thickness_mm", "marker_depth_mm", "dome_radius_mm",
-                            "nodes_per_square", "margin_squares", "friction"}));
-  sc.camera = readCamera(Section(fs["camera"], path + ": camera",
-                                 {"view_width", "view_height", "focal_px", "distance_mm", "baseline_mm", "k1", "k2",
-                                  "p1", "p2", "k3", "flip_left", "flip_right"}));
-  sc.image = readImage(Section(fs["image"], path + ": image",
-                               {"noise_sigma", "blur_sigma", "vignetting", "exposure", "light_gradient",
-                                "dust_blobs", "specular_spots", "occlusion_fraction"}));
+  if (sc.kind != "touch" && sc.kind != "calibration") root["kind"].fail("expected 'touch' or 'calibration'");
+  sc.fps = root.real("fps", 30, 1, 1000);
+  sc.seed = static_cast<unsigned>(root.integer("seed", 1, 0, 2147483647));
+  sc.pad = readPad(root["pad"]);
+  sc.camera = readCamera(root["camera"]);
+  sc.image = readImage(root["image"]);
   if (sc.isCalibration()) {
-    const Section t(fs["target"], path + ": target",
-                    {"rows", "cols", "square_mm", "poses", "tilt_deg", "yaw_deg", "shift_mm", "depth_min_mm",
-                     "depth_max_mm"});
-    CalibrationTarget& g = sc.target;
-    g.rows = t.integer("rows", g.rows);
-    g.cols = t.integer("cols", g.cols);
-    g.square_mm = t.number("square_mm", g.square_mm);
-    g.poses = t.integer("poses", g.poses);
-    g.tilt_deg = t.number("tilt_deg", g.tilt_deg);
-    g.yaw_deg = t.number("yaw_deg", g.yaw_deg);
-    g.shift_mm = t.number("shift_mm", g.shift_mm);
-    g.depth_min_mm = t.number("depth_min_mm", g.depth_min_mm);
-    g.depth_max_mm = t.number("depth_max_mm", g.depth_max_mm);
-    validateIn(path + ": target", [&] { MarkerPattern{g.rows, g.cols, g.square_mm}.validate(); });
-    if (g.poses < 3 || g.poses > 1000) throw InputError(path + ": target.poses: must be in [3, 1000]");
-    if (!(g.tilt_deg >= 0 && g.tilt_deg <= 60)) throw InputError(path + ": target.tilt_deg: must be in [0, 60]");
-    if (!(g.depth_min_mm < g.depth_max_mm)) throw InputError(path + ": target.depth_min_mm: must be < depth_max_mm");
+    sc.target = readTarget(root["target"]);
     return sc;
   }
-  const cv::FileNode ind = fs["indenters"];
-  if (!ind.isSeq() || ind.size() < 1) throw InputError(path + ": indenters: expected a list of at least one indenter");
-  for (size_t i = 0; i < ind.size(); ++i)
-    sc.indenters.push_back(readIndenter(ind[static_cast<int>(i)], path + ": indenters[" + std::to_string(i) + "]"));
+  const ConfigNode ind = root["indenters"];
+  if (!ind.isSeq() || ind.size() < 1) ind.fail("expected a list of at least one indenter");
+  for (size_t i = 0; i < ind.size(); ++i) sc.indenters.push_back(readIndenter(ind[i]));
+  if (sc.defaultFrameCount() > kMaxScenarioFrames)
+    root["fps"].fail("fps x duration gives " + std::to_string(sc.defaultFrameCount()) + " frames; at most " +
+                     std::to_string(kMaxScenarioFrames) + " are allowed");
   return sc;
 }
 

@@ -1,5 +1,5 @@
 // sim/scenario.hpp — a simulator scenario: a small YAML keyframe file
-// (samples/scenarios/*.yaml, OpenCV FileStorage YAML).
+// (samples/scenarios/*.yaml, plain YAML or JSON).
 //
 // A touch scenario moves one or more indenters through keyframes:
 //   indenters:
@@ -69,7 +69,12 @@ struct Scenario {
   std::vector<Eigen::Isometry3d> posesAt(double t, const PadLattice& lattice) const;
 };
 
-// Reads and validates a scenario; throws InputError "<file>: <key>: what is wrong".
+// A scenario may last at most this many frames (duration x fps + 1): 2.3 h
+// at 30 fps, 14 min at 240 fps.
+constexpr int kMaxScenarioFrames = 250000;
+
+// Reads and validates a scenario (YAML or JSON, core/config_file.hpp); throws
+// InputError "<file>:<line>: key '<key>': what is wrong".
 Scenario loadScenario(const std::string& path);
 
 }  // namespace onetip::sim

@@ -5,7 +5,7 @@
 // 6-D ground truth. Image level (render()): what the virtual binocular camera
 // sees, 1920 x 1080 grey by default. Calibration scenarios show a rigid target
 // at random poses instead of the pad (markers then hold the target corners).
-// S is derived from the rest markers (CONVENTIONS.md); for a flat pad it is
+// S is derived from the rest markers (docs/reference.md); for a flat pad it is
 // the pad frame P itself.
 #pragma once
 

@@ -3,7 +3,7 @@
 // test driving the window with synthetic input) did can be checked afterwards.
 //
 // Columns: frame,contact,state,dx,dy,dz,yaw,pitch,roll — as pose.csv in
-// CONVENTIONS.md (S frame; mm and degrees; state none / stick / partial_slip /
+// docs/reference.md (S frame; mm and degrees; state none / stick / partial_slip /
 // slip) — then, for simulated inputs, the simulator's ground truth for the
 // same frame: gt_contact,gt_dx,gt_dy,gt_dz,gt_yaw,gt_pitch,gt_roll; then, for
 // sim:virtual, the finger's commanded pose (viewer/virtual_finger.hpp):

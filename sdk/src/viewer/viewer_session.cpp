@@ -147,6 +147,7 @@ ViewerReport runViewer(const ViewerOptions& o, const FrameObserver& observer) {
   for (;;) {
     if (surface.window && !surface.window->isOpen()) break;
     if (o.frames > 0 && report.drawn >= o.frames) break;
+    if (o.stop && o.stop->load()) break;
     const auto t_frame = Clock::now();
     if (in.finger && surface.window) {
       in.finger->finger().apply(surface.window->takeControls(std::chrono::duration<double>(t_frame - last_controls).count()));

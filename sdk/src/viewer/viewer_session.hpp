@@ -15,6 +15,7 @@
 // Times are milliseconds on the calling thread (steady clock).
 #pragma once
 
+#include <atomic>
 #include <functional>
 #include <opencv2/core.hpp>
 #include <string>
@@ -34,6 +35,7 @@ struct ViewerOptions {
   cv::Size window{1280, 720};
   bool headless = false;
   bool windowed = false;       // a window even with a screenshot or recording (needs a display)
+  const std::atomic<bool>* stop = nullptr;  // set (e.g. by SIGINT): end after the current frame, outputs written
   ViewerRendererOptions render;
   void validate() const;       // throws InputError naming the bad option
   bool runsHeadless() const;   // offscreen rather than in a window

@@ -7,7 +7,7 @@
 // px), the method of the real-photo reference in data/real (README: about
 // 0.2 px reprojection on OpenCV's stereo set; wider windows pull corners
 // near the board edge). Points are returned in view coordinates (after the
-// view's flip) and numbered like markers (CONVENTIONS.md): index =
+// view's flip) and numbered like markers (docs/reference.md): index =
 // row * cols + col with col growing along image x and row along image y, the
 // board's symmetries (180 deg; 90 deg and transposes for square boards;
 // in-plane mirror images, which for a flat board are 180 deg turns about an

@@ -19,7 +19,7 @@
 // Where its extent exceeds the expected rows x cols (in either axis
 // assignment), sparse outer lines (stray corners linked beyond the board) are
 // trimmed.
-// Orientation (CONVENTIONS.md, in the image the corners are given in): the
+// Orientation (docs/reference.md, in the image the corners are given in): the
 // lattice axis whose mean step is more along image x is the column axis, col
 // grows with +x and row with +y; labels start at 0. If that would make the
 // extent the transpose of the expected rows x cols, the axes are swapped

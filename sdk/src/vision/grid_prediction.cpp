@@ -38,8 +38,8 @@ std::optional<cv::Point2f> predictFromNeighbours(const LatticeView& g, int r, in
   return cv::Point2f(median(xs, n), median(ys, n));
 }
 
-float localSpacing(const LatticeView& g, int r, int c, cv::Point2f p) {
-  std::array<float, 4> d{};
+namespace {
+size_t linkLengths(const LatticeView& g, int r, int c, cv::Point2f p, std::array<float, 4>& d) {
   size_t n = 0;
   constexpr int kDir[4][2] = {{0, 1}, {0, -1}, {1, 0}, {-1, 0}};
   for (const auto& k : kDir) {
@@ -47,7 +47,20 @@ float localSpacing(const LatticeView& g, int r, int c, cv::Point2f p) {
     const cv::Point2f v = g.at(r + k[0], c + k[1]) - p;
     d[n++] = std::sqrt(v.dot(v));
   }
+  return n;
+}
+}  // namespace
+
+float localSpacing(const LatticeView& g, int r, int c, cv::Point2f p) {
+  std::array<float, 4> d{};
+  const size_t n = linkLengths(g, r, c, p, d);
   return n == 0 ? 0.0f : median(d, n);
+}
+
+float shortestLink(const LatticeView& g, int r, int c, cv::Point2f p) {
+  std::array<float, 4> d{};
+  const size_t n = linkLengths(g, r, c, p, d);
+  return n == 0 ? 0.0f : *std::min_element(d.begin(), d.begin() + static_cast<long>(n));
 }
 
 }  // namespace onetip::vision

@@ -7,7 +7,9 @@
 // parallelogram completions p[r+dr,c] + p[r,c+dc] - p[r+dr,c+dc]
 // (dr, dc = +-1). The estimate is their component-wise median, which one bad
 // neighbour cannot move far. Exact for any affine map of the lattice.
-// localSpacing: median distance from p[r,c] to its available 4-neighbours.
+// localSpacing: median distance from p[r,c] to its available 4-neighbours;
+// shortestLink: the smallest of those distances (where a view foreshortens
+// the lattice along one axis, the spacing that bounds a safe search).
 #pragma once
 
 #include <cstdint>
@@ -33,5 +35,8 @@ std::optional<cv::Point2f> predictFromNeighbours(const LatticeView& grid, int r,
 
 // Median distance from `p` to the available 4-neighbours of (r, c), or 0.
 float localSpacing(const LatticeView& grid, int r, int c, cv::Point2f p);
+
+// Smallest distance from `p` to the available 4-neighbours of (r, c), or 0.
+float shortestLink(const LatticeView& grid, int r, int c, cv::Point2f p);
 
 }  // namespace onetip::vision

@@ -6,7 +6,9 @@
 #include <numeric>
 
 #include "core/error.hpp"
+#include "vision/grid_checks.hpp"
 #include "vision/grid_graph.hpp"
+#include "vision/grid_growth.hpp"
 #include "vision/grid_prediction.hpp"
 #include "vision/grid_recovery.hpp"
 
@@ -65,9 +67,17 @@ void GridTrackerOptions::validate() const {
   if (!(search_radius > 0.0f && search_radius < 0.5f)) throw InputError("grid_tracker.search_radius: must be in (0, 0.5)");
   if (!(outlier_fraction > 0.0f && outlier_fraction < 1.0f))
     throw InputError("grid_tracker.outlier_fraction: must be in (0, 1)");
+  if (!(spatial_outlier_fraction >= outlier_fraction && spatial_outlier_fraction < 1.0f))
+    throw InputError("grid_tracker.spatial_outlier_fraction: must be in [outlier_fraction, 1)");
   if (!(max_link_stretch > 1.0f)) throw InputError("grid_tracker.max_link_stretch: must exceed 1");
   if (!(recovery_reach > 0.0f && recovery_reach <= 3.0f)) throw InputError("grid_tracker.recovery_reach: must be in (0, 3]");
   if (!(velocity_gain >= 0.0f && velocity_gain <= 1.0f)) throw InputError("grid_tracker.velocity_gain: must be in 0..1");
+  if (!(seed_speed >= 0.0f && seed_speed <= 1.0f)) throw InputError("grid_tracker.seed_speed: must be in 0..1");
+  if (!(seed_radius > 0.0f && seed_radius <= search_radius))
+    throw InputError("grid_tracker.seed_radius: must be in (0, search_radius]");
+  if (min_seeds < 1) throw InputError("grid_tracker.min_seeds: must be at least 1");
+  if (!(relabel_median > 0.0f && relabel_median < 1.0f)) throw InputError("grid_tracker.relabel_median: must be in (0, 1)");
+  if (!(seam_stretch > 1.0f && seam_stretch < 2.0f)) throw InputError("grid_tracker.seam_stretch: must be in (1, 2)");
 }
 
 GridTracker::GridTracker(MarkerPattern pattern, GridTrackerOptions options)
@@ -96,6 +106,7 @@ GridTracker::Prediction GridTracker::predict() const {
   Prediction p;
   p.point.assign(static_cast<size_t>(n), cv::Point2f(0, 0));
   p.radius.assign(static_cast<size_t>(n), 0.0f);
+  p.spacing.assign(static_cast<size_t>(n), 0.0f);
   std::vector<std::uint8_t> have(static_cast<size_t>(n), 0);
   for (int id = 0; id < n; ++id) {
     const size_t i = static_cast<size_t>(id);
@@ -108,15 +119,19 @@ GridTracker::Prediction GridTracker::predict() const {
   fillHoles(pattern_, p.point, have);
   for (int id = 0; id < n; ++id)
     if (!have[static_cast<size_t>(id)]) p.point[static_cast<size_t>(id)] = current_.point[static_cast<size_t>(id)];
-  // Search radius from the predicted local spacing (the rest spacing as fallback).
+  // Local spacing and search radius from the predicted links (the rest ones
+  // as fallback); the radius from the shortest link, so a foreshortened axis
+  // cannot bring the neighbour along it inside.
   const std::vector<std::uint8_t> all(static_cast<size_t>(n), 1);
   const LatticeView grid{pattern_.rows, pattern_.cols, &p.point, &all};
   const LatticeView rest = lattice(rest_);
   for (int id = 0; id < n; ++id) {
     const int r = pattern_.rowOf(id), c = pattern_.colOf(id);
-    float spacing = localSpacing(grid, r, c, p.point[static_cast<size_t>(id)]);
-    if (spacing <= 0) spacing = localSpacing(rest, r, c, rest_.point[static_cast<size_t>(id)]);
-    p.radius[static_cast<size_t>(id)] = options_.search_radius * spacing;
+    const size_t i = static_cast<size_t>(id);
+    float shortest = shortestLink(grid, r, c, p.point[i]), spacing = localSpacing(grid, r, c, p.point[i]);
+    if (shortest <= 0) shortest = shortestLink(rest, r, c, rest_.point[i]), spacing = localSpacing(rest, r, c, rest_.point[i]);
+    p.radius[i] = options_.search_radius * shortest;
+    p.spacing[i] = spacing;
   }
   return p;
 }
@@ -124,17 +139,13 @@ GridTracker::Prediction GridTracker::predict() const {
 GridResult GridTracker::track(const std::vector<Corner>& corners, const ViewHalf& view) {
   if (view.raw.empty() || view.raw.type() != CV_8UC1) throw InputError("grid tracker: view must be a non-empty CV_8UC1 image");
   if (!initialized_) return failure(GridStatus::NotInitialized, pattern_, "grid tracker: track() before a successful initialize()");
-  const Prediction pred = predict();
   // Corners sorted by x for a range search around each prediction.
   std::vector<int> order(corners.size());
   std::iota(order.begin(), order.end(), 0);
   std::sort(order.begin(), order.end(), [&](int a, int b) { return corners[a].pt.x < corners[b].pt.x; });
   std::vector<float> xs(order.size());
   for (size_t k = 0; k < order.size(); ++k) xs[k] = corners[order[k]].pt.x;
-  ViewMarkers candidates(pattern_);
-  for (int id = 0; id < pattern_.count(); ++id) {
-    const cv::Point2f q = pred.point[static_cast<size_t>(id)];
-    const float radius = pred.radius[static_cast<size_t>(id)];
+  const auto near = [&](cv::Point2f q, float radius) -> std::optional<cv::Point2f> {
     float best = radius * radius;
     int arg = -1;
     for (auto k = std::lower_bound(xs.begin(), xs.end(), q.x - radius) - xs.begin();
@@ -142,108 +153,171 @@ GridResult GridTracker::track(const std::vector<Corner>& corners, const ViewHalf
       const cv::Point2f d = corners[order[static_cast<size_t>(k)]].pt - q;
       if (d.dot(d) <= best) best = d.dot(d), arg = order[static_cast<size_t>(k)];
     }
-    if (arg >= 0) candidates.set(id, corners[arg].pt);
-  }
-  if (candidates.count() < pattern_.count()) recover(corners, view, pred, candidates);
-  return finish(pred, std::move(candidates));
+    if (arg < 0) return std::nullopt;
+    return corners[static_cast<size_t>(arg)].pt;
+  };
+  return trackWith(near, [&](const std::vector<cv::Point2f>&, float) { return corners; }, view);
 }
 
 GridResult GridTracker::track(const ViewHalf& view, const CornerDetector& detector) {
   if (!initialized_) return failure(GridStatus::NotInitialized, pattern_, "grid tracker: track() before a successful initialize()");
   if (view.raw.empty() || view.raw.type() != CV_8UC1) throw InputError("grid tracker: view must be a non-empty CV_8UC1 image");
-  const Prediction pred = predict();
-  ViewMarkers candidates(pattern_);
-  const auto detect_start = std::chrono::steady_clock::now();
-  for (int id = 0; id < pattern_.count(); ++id) {
-    const size_t i = static_cast<size_t>(id);
-    if (auto c = detector.detectNear(view.raw, view.toRaw(pred.point[i]), pred.radius[i])) candidates.set(id, view.toView(c->pt));
-  }
-  double detect_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - detect_start).count();
-  if (candidates.count() < pattern_.count()) {
-    // Detect in the region of the lost markers (raw pixels), for recovery.
+  double detect_ms = 0;
+  const auto timed = [&](auto&& f) {
+    const auto t0 = std::chrono::steady_clock::now();
+    auto out = f();
+    detect_ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    return out;
+  };
+  const auto near = [&](cv::Point2f q, float radius) -> std::optional<cv::Point2f> {
+    const auto c = timed([&] { return detector.detectNear(view.raw, view.toRaw(q), radius); });
+    if (!c) return std::nullopt;
+    return view.toView(c->pt);
+  };
+  // Detection in the raw bounding box of the points, grown by `reach`.
+  const auto region = [&](const std::vector<cv::Point2f>& points, float reach) {
+    std::vector<Corner> corners;
+    if (points.empty()) return corners;
     cv::Rect2f box;
-    float reach = 0;
-    for (int id = 0; id < pattern_.count(); ++id) {
-      const size_t i = static_cast<size_t>(id);
-      if (candidates.valid[i]) continue;
-      const cv::Point2f p = view.toRaw(pred.point[i]);
+    for (const cv::Point2f& q : points) {
+      const cv::Point2f p = view.toRaw(q);
       box = box.area() > 0 ? (box | cv::Rect2f(p, cv::Size2f(1, 1))) : cv::Rect2f(p, cv::Size2f(1, 1));
-      reach = std::max(reach, 2.0f * pred.radius[i] / options_.search_radius);
     }
     const cv::Rect roi = cv::Rect(cv::Point(static_cast<int>(box.x - reach), static_cast<int>(box.y - reach)),
                                   cv::Point(static_cast<int>(box.br().x + reach), static_cast<int>(box.br().y + reach))) &
                          cv::Rect(0, 0, view.width(), view.height());
-    if (roi.area() > 0) {
-      const auto roi_start = std::chrono::steady_clock::now();
-      std::vector<Corner> corners = detector.detect(view.raw(roi));
-      detect_ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - roi_start).count();
-      for (Corner& c : corners) {
-        c.pt += cv::Point2f(static_cast<float>(roi.x), static_cast<float>(roi.y));
-        c = toView(c, view);
-      }
-      recover(corners, view, pred, candidates);
+    if (roi.area() <= 0) return corners;
+    corners = timed([&] { return detector.detect(view.raw(roi)); });
+    for (Corner& c : corners) {
+      c.pt += cv::Point2f(static_cast<float>(roi.x), static_cast<float>(roi.y));
+      c = toView(c, view);
     }
-  }
-  GridResult result = finish(pred, std::move(candidates));
+    return corners;
+  };
+  GridResult result = trackWith(near, region, view);
   result.detect_ms = detect_ms;
   return result;
 }
 
-void GridTracker::recover(const std::vector<Corner>& corners, const ViewHalf& view, const Prediction& pred,
-                          ViewMarkers& candidates) const {
-  std::vector<float> reach(pred.radius.size());
-  for (size_t i = 0; i < reach.size(); ++i) reach[i] = options_.recovery_reach * pred.radius[i] / options_.search_radius;
-  recoverThroughLinks(corners, view, pattern_, pred.point, reach, candidates);
+GridResult GridTracker::trackWith(const std::function<std::optional<cv::Point2f>(cv::Point2f, float)>& near,
+                                  const RegionDetector& region, const ViewHalf& view) {
+  const Prediction pred = predict();
+  const size_t n = static_cast<size_t>(pattern_.count());
+  std::vector<cv::Point2f> motion(n, cv::Point2f(0, 0));
+  std::vector<float> shortest(n);  // the growth's searches scale with the shortest link
+  for (size_t i = 0; i < n; ++i) {
+    if (current_.valid[i] && previous_.valid[i]) motion[i] = current_.point[i] - previous_.point[i];
+    shortest[i] = pred.radius[i] / options_.search_radius;
+  }
+  const std::vector<float>& spacing = pred.spacing;
+  std::vector<float> sorted = spacing;
+  std::nth_element(sorted.begin(), sorted.begin() + static_cast<long>(n / 2), sorted.end());
+  const float median_spacing = sorted[n / 2];  // reach of the whole-view detections
+  const GrowthOptions growth{options_.seed_speed, options_.seed_radius, options_.search_radius, options_.velocity_gain, 2};
+  GrowthResult grown = growGrid(pattern_, GrowthState{&current_.point, &current_.valid, &motion, &shortest}, growth, near);
+  ViewMarkers candidates = std::move(grown.markers);
+  bool relabelled = false;
+  if (grown.seeds < options_.min_seeds) {
+    // Nothing stood still to grow from: the whole view, relabelled.
+    ViewMarkers fresh(pattern_);
+    const std::vector<Corner> corners = region(current_.point, median_spacing);
+    if (relabelAnchored(corners, view, pattern_, current_.point, options_.relabel_median * median_spacing, fresh) >
+        candidates.count())
+      candidates = std::move(fresh), relabelled = true;
+  }
+  if (candidates.count() < pattern_.count()) {
+    // Lost markers: completed from this frame's markers, else their temporal
+    // prediction; recovered through the links of the corners around them.
+    std::vector<cv::Point2f> expected = candidates.point;
+    std::vector<std::uint8_t> have = candidates.valid;
+    fillHoles(pattern_, expected, have);
+    std::vector<cv::Point2f> lost;
+    std::vector<float> reach(n);
+    float widest = 0;
+    for (size_t i = 0; i < n; ++i) {
+      if (!have[i]) expected[i] = pred.point[i];
+      reach[i] = options_.recovery_reach * spacing[i];
+      if (!candidates.valid[i]) lost.push_back(expected[i]), widest = std::max(widest, 2.0f * spacing[i]);
+    }
+    recoverThroughLinks(region(lost, widest), view, pattern_, expected, reach, candidates);
+  }
+  if (hasSeam(candidates, options_.seam_stretch, near)) {
+    // Ids slipped by a square somewhere: the whole view relabelled by the majority.
+    relabelled = relabelByMajority(region(current_.point, median_spacing), view, pattern_, candidates) > 0 || relabelled;
+  }
+  GridResult r = finish(pred, std::move(candidates));
+  r.relabelled = relabelled;
+  return r;
 }
 
 GridResult GridTracker::finish(const Prediction& pred, ViewMarkers m) {
   GridResult r;
+  const size_t n = static_cast<size_t>(pattern_.count());
+  // Where the neighbours put each id (else its temporal prediction).
+  const auto expected = [&](int id) {
+    const auto q = predictFromNeighbours(lattice(m), pattern_.rowOf(id), pattern_.colOf(id));
+    return q ? *q : pred.point[static_cast<size_t>(id)];
+  };
   const auto distance2 = [&](int id) {
-    const cv::Point2f d = m.point[static_cast<size_t>(id)] - pred.point[static_cast<size_t>(id)];
+    const cv::Point2f d = m.point[static_cast<size_t>(id)] - expected(id);
     return d.dot(d);
   };
-  // Two neighbouring ids on one corner: the one predicted nearer keeps it.
+  // Two neighbouring ids on one corner: the one its neighbours predict better keeps it.
   for (int id = 0; id < pattern_.count(); ++id) {
     if (!m.valid[static_cast<size_t>(id)]) continue;
     const int row = pattern_.rowOf(id), col = pattern_.colOf(id);
     for (int dr = -1; dr <= 1; ++dr) {
       for (int dc = -1; dc <= 1; ++dc) {
         const int other = pattern_.id(row + dr, col + dc);
-        if ((dr == 0 && dc == 0) || !m.has(row + dr, col + dc)) continue;
+        if ((dr == 0 && dc == 0) || !m.has(row + dr, col + dc) || !m.valid[static_cast<size_t>(id)]) continue;
         const cv::Point2f d = m.point[static_cast<size_t>(other)] - m.point[static_cast<size_t>(id)];
         if (d.dot(d) < 1.0f) m.clear(distance2(id) <= distance2(other) ? other : id);
       }
     }
   }
-  // Outliers: far from the neighbours' completion, or links that flip or stretch.
+  // Swap detector: far from where the neighbours put it, links that flip,
+  // stretch or cross.
   const LatticeView now = lattice(m), before = lattice(current_);
   std::vector<int> reject;
+  std::vector<float> confidence(n, 0.0f);
   for (int id = 0; id < pattern_.count(); ++id) {
     if (!m.valid[static_cast<size_t>(id)]) continue;
     const int row = pattern_.rowOf(id), col = pattern_.colOf(id);
     const cv::Point2f p = m.point[static_cast<size_t>(id)];
-    const float spacing = pred.radius[static_cast<size_t>(id)] / options_.search_radius;
-    if (auto q = predictFromNeighbours(now, row, col)) {
-      const cv::Point2f d = p - *q;
-      if (d.dot(d) > options_.outlier_fraction * options_.outlier_fraction * spacing * spacing) {
+    const float tolerance = options_.outlier_fraction * pred.spacing[static_cast<size_t>(id)];
+    // Residual against the neighbours' motion since the last frame when this
+    // marker was measured then (robust to the pattern's own distortion), else
+    // against their spatial completion; and, looser, against the spatial
+    // completion always (a run of markers shifted together along a line
+    // keeps its motion but not its place among the neighbours).
+    const auto spatial = predictFromNeighbours(now, row, col);
+    if (spatial && cv::norm(p - *spatial) > options_.spatial_outlier_fraction * tolerance / options_.outlier_fraction) {
+      reject.push_back(id);
+      continue;
+    }
+    std::optional<cv::Point2f> q;
+    if (current_.valid[static_cast<size_t>(id)]) q = predictFromNeighbourMotion(pattern_, current_.point, current_.valid, m, id, true);
+    if (!q) q = spatial;
+    float agreement = 0.5f;
+    if (q) {
+      const float residual = static_cast<float>(cv::norm(p - *q));
+      if (residual > tolerance) {
         reject.push_back(id);
         continue;
       }
+      agreement = 1.0f - residual / tolerance;
     }
-    int checked = 0, bad = 0;
-    constexpr int kDir[4][2] = {{0, 1}, {0, -1}, {1, 0}, {-1, 0}};
-    for (const auto& k : kDir) {
-      const int nr = row + k[0], nc = col + k[1];
-      if (!now.has(nr, nc) || !before.has(nr, nc) || !before.has(row, col)) continue;
-      const cv::Point2f link = now.at(nr, nc) - p, old = before.at(nr, nc) - before.at(row, col);
-      const float ratio = std::sqrt(link.dot(link) / std::max(old.dot(old), 1e-6f));
-      ++checked;
-      if (link.dot(old) <= 0 || ratio > options_.max_link_stretch || ratio * options_.max_link_stretch < 1.0f) ++bad;
+    const LinkCheck links = checkLinks(now, before, row, col, options_.max_link_stretch);
+    if (2 * links.bad > links.checked || links.crossed > 0) {
+      reject.push_back(id);
+      continue;
     }
-    if (2 * bad > checked) reject.push_back(id);
+    confidence[static_cast<size_t>(id)] =
+        agreement * (links.checked > 0 ? 1.0f - static_cast<float>(links.bad) / static_cast<float>(links.checked) : 1.0f);
   }
   for (int id : reject) m.clear(id);
   r.rejected = static_cast<int>(reject.size());
+  m.confidence = std::move(confidence);
 
   // State update: the measured markers; the lost ones completed from this
   // frame's measured neighbours where possible, else their prediction.

@@ -5,23 +5,53 @@
 // gives each corner of the largest consistent grid a lattice (row, col); its
 // extent must equal the pattern's. Ids are anchored in the view (after the
 // flip): row 0 is the top row, col 0 the leftmost column, col grows with
-// image x and row with image y (CONVENTIONS.md), so the left and right views
+// image x and row with image y (docs/reference.md), so the left and right views
 // of a pair are numbered consistently.
-// track(): each id is predicted from its last positions (last position plus
-// velocity_gain x its last motion: 0.5 measured best on the simulator's
-// scenarios, where full constant velocity overshoots when the motion reverses),
-// or, when it was lost, from its tracked grid neighbours (parallelogram and
-// midpoint completions); the nearest corner within search_radius x the local
-// marker spacing is taken, each corner at most once; a marker whose position
-// disagrees with its neighbours' prediction by more than outlier_fraction x
-// spacing, or whose links to its neighbours flip direction or change length by
-// more than max_link_stretch, is rejected. Markers still lost are recovered
-// through the rigid links (vision/grid_recovery.hpp) of the corners detected
-// around them, up to recovery_reach x spacing from their prediction.
+// track(): the markers are grown over the grid graph (vision/grid_growth.hpp):
+// seeds are the markers that stood still in the last frame, found near their
+// last position, and every other marker is searched where its found
+// neighbours' motion in this frame puts it (the deformation field is smooth),
+// so a reversal or a sudden start of a sliding finger moves the prediction
+// with the field. With fewer than min_seeds seeds (the whole pattern moved,
+// or the last frame was lost), the frame is detected whole and relabelled
+// through the board's links, anchored to the last ids by the part of the
+// pattern that moved least (grid_recovery.hpp). Markers still lost are
+// recovered through the rigid links of the corners detected around them, up
+// to recovery_reach x spacing from their completion by this frame's markers.
+// Searches reach search_radius x the shortest predicted link to a
+// 4-neighbour (a foreshortened axis cannot bring its neighbour inside);
+// "spacing" below is the median link.
+// Re-identification without reset: where a link between two reported
+// neighbours is more than seam_stretch x both links that continue it along
+// its lattice line and a corner sits at its middle (the corner the ids
+// skipped), or less than a tenth of both (two ids on one corner), ids slipped
+// by a square on one side of it (a region whose markers all agree with each
+// other, which no local test sees); the view is then detected whole and every id relabelled from the
+// board's links by the majority's lattice offset (grid_recovery.hpp,
+// relabelByMajority).
+// Swap detector (finish): of two ids on one corner the one its neighbours
+// predict better keeps it; a marker is dropped for the frame (never reported
+// at a neighbour's position) when it lies more than outlier_fraction x
+// spacing from where its neighbours put it (their motion since the last
+// frame, grid_growth.hpp, when it was measured then, else their spatial
+// completion, grid_prediction.hpp), or more than spatial_outlier_fraction x
+// spacing from their spatial completion (looser: a deep press distorts the
+// lattice by up to half a square, but a run of markers shifted together
+// along a line by a whole square keeps its motion, not its place), when most
+// of its links to its four neighbours flip direction or change length by
+// more than max_link_stretch since the last frame, or when two consecutive
+// links (right, down, left, up in lattice order) turn the wrong way round
+// (links crossing).
+// Confidence per reported marker, in 0..1 (ViewMarkers::confidence):
+//   (1 - residual / (outlier_fraction x spacing)) x (good links / links),
+// residual being that distance; 0.5 x the link factor when no neighbour can
+// place it.
 // Units: view pixels.
 #pragma once
 
+#include <functional>
 #include <opencv2/core.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -32,11 +62,17 @@
 namespace onetip::vision {
 
 struct GridTrackerOptions {
-  float search_radius = 0.4f;     // of the local marker spacing
-  float outlier_fraction = 0.3f;  // allowed deviation from the neighbour prediction, of spacing
+  float search_radius = 0.4f;     // of the shortest predicted link
+  float outlier_fraction = 0.3f;  // allowed deviation from where the neighbours' motion puts it, of spacing
+  float spatial_outlier_fraction = 0.8f;  // allowed deviation from the neighbours' spatial completion, of spacing
   float max_link_stretch = 2.0f;  // a link may grow or shrink by this factor per frame
   float velocity_gain = 0.5f;     // prediction = last + gain x last motion (0: last position)
   float recovery_reach = 1.0f;    // lost markers recovered through links up to this x spacing away
+  float seed_speed = 0.1f;        // of spacing per frame: markers that moved less seed the growth
+  float seed_radius = 0.2f;       // of spacing: a seed's search radius
+  int min_seeds = 3;              // fewer seeds: detect the whole view and relabel
+  float relabel_median = 0.5f;    // of spacing: the relabelling's largest accepted median distance
+  float seam_stretch = 1.5f;      // a link this much longer than its collinear neighbours: look for a seam
   void validate() const;          // throws InputError naming the bad field
 };
 
@@ -55,6 +91,7 @@ struct GridResult {
   int lost = 0;          // pattern markers not measured this frame
   int rejected = 0;      // matched but rejected as outliers
   int recovered = 0;     // found again after being lost
+  bool relabelled = false;  // a whole-view relabelling (no seeds, or a seam) changed the ids
   std::string message;   // why, when status is not Ok
   double detect_ms = 0;  // time spent detecting corners inside track(view, detector)
   bool ok() const noexcept { return status == GridStatus::Ok; }
@@ -84,11 +121,15 @@ class GridTracker {
  private:
   struct Prediction {
     std::vector<cv::Point2f> point;  // per id, view pixels
-    std::vector<float> radius;       // per id, search radius in pixels
+    std::vector<float> radius;       // per id, search radius in pixels (of the shortest link)
+    std::vector<float> spacing;      // per id, local spacing (median link) in pixels
   };
+  // Corners around the given view points, up to `reach` pixels from them
+  // (the image path detects in their bounding box; the list path returns all).
+  using RegionDetector = std::function<std::vector<Corner>(const std::vector<cv::Point2f>& points, float reach)>;
   Prediction predict() const;
-  void recover(const std::vector<Corner>& corners, const ViewHalf& view, const Prediction& prediction,
-               ViewMarkers& candidates) const;
+  GridResult trackWith(const std::function<std::optional<cv::Point2f>(cv::Point2f, float)>& near,
+                       const RegionDetector& region, const ViewHalf& view);
   // Resolves ids claiming the same corner, rejects outliers, updates the state.
   GridResult finish(const Prediction& prediction, ViewMarkers candidates);
 

@@ -11,7 +11,7 @@
 //    (refines intrinsics and R, T jointly; on OpenCV's real stereo set this
 //    gives 0.218 px against 0.221 px with fixed intrinsics).
 // The RMS is the stereo reprojection error over both views, in pixels.
-// R, T follow CONVENTIONS.md (X_R = R X_L + T), T in mm.
+// R, T follow docs/reference.md (X_R = R X_L + T), T in mm.
 #pragma once
 
 #include <opencv2/core.hpp>

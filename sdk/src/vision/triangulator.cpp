@@ -1,5 +1,6 @@
 #include "vision/triangulator.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <opencv2/calib3d.hpp>
 
@@ -115,6 +116,9 @@ TriangulationResult Triangulator::triangulate(const ViewMarkers& left,
       continue;
     }
     result.markers.set(ids[i], p.X_L);
+    const size_t k = static_cast<size_t>(ids[i]);
+    const auto graded = [k](const ViewMarkers& m) { return k < m.confidence.size() ? m.confidence[k] : 1.0f; };
+    result.markers.confidence[k] = std::min(graded(left), graded(right));
     sum_sq += p.reprojection_px * p.reprojection_px;
   }
   const int accepted = result.matched - result.rejected;

@@ -1,7 +1,7 @@
 // vision/triangulator.hpp — 3-D markers from the two views' 2-D markers.
 //
 // Input: per-view marker pixels (view coordinates after the view's flip,
-// pixel centres at integers; CONVENTIONS.md) with ids; the same id in both
+// pixel centres at integers; docs/reference.md) with ids; the same id in both
 // views is a correspondence. Only the POINTS are undistorted
 // (cv::undistortPoints, iterated to 1e-9 px, to ideal pixel coordinates of
 // the same K), never whole images. Then, with the calibration's R, T
@@ -21,7 +21,8 @@
 // Output: a MarkerField in the left camera frame L (mm) with valid[id] set for
 // every id seen in both views whose reprojection error (distance between the
 // ideal pixel and the reprojected point, worst of the two views) is at most
-// max_reprojection_px; others count as rejected.
+// max_reprojection_px; others count as rejected. Its confidence[id] is the
+// lower of the two views' (ViewMarkers::confidence; 1 where a view has none).
 #pragma once
 
 #include <Eigen/Core>

@@ -2,8 +2,10 @@
 //
 // id = row * cols + col (core/pattern.hpp); point[id] in view pixel
 // coordinates (after the view's flip, centres at integers), valid[id] = 1
-// where the marker was measured in this frame. The same id in the left and
-// right views is the stereo correspondence.
+// where the marker was measured in this frame, confidence[id] in 0..1 how
+// well its grid neighbours agree with it (vision/grid_tracker.hpp; 1 where a
+// producer does not grade). The same id in the left and right views is the
+// stereo correspondence.
 #pragma once
 
 #include <cstdint>
@@ -19,12 +21,13 @@ struct ViewMarkers {
   int cols = 0;
   std::vector<cv::Point2f> point;
   std::vector<std::uint8_t> valid;
+  std::vector<float> confidence;
 
   ViewMarkers() = default;
   explicit ViewMarkers(const MarkerPattern& pattern)
       : rows(pattern.rows), cols(pattern.cols),
         point(static_cast<size_t>(pattern.count()), cv::Point2f(0, 0)),
-        valid(static_cast<size_t>(pattern.count()), 0) {}
+        valid(static_cast<size_t>(pattern.count()), 0), confidence(static_cast<size_t>(pattern.count()), 1.0f) {}
 
   int size() const noexcept { return rows * cols; }
   int count() const noexcept {

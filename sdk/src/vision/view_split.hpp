@@ -1,7 +1,7 @@
 // vision/view_split.hpp — the two virtual views of one camera frame.
 //
 // A frame of image_width x image_height pixels holds the left view in columns
-// [0, split_x) and the right view in [split_x, width) (CONVENTIONS.md). A view
+// [0, split_x) and the right view in [split_x, width) (docs/reference.md). A view
 // is a cv::Mat ROI into the frame (no copy) plus its flip flag: when flipped,
 // the view's own pixel coordinates are those of the half mirrored
 // horizontally, x_view = w - 1 - x_raw (w = the half's width, y unchanged).

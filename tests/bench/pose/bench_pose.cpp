@@ -56,7 +56,7 @@ void BM_ContactAndPose(benchmark::State& state) {
   for (auto _ : state) {
     if (i == 0) estimator.reset();  // replay the contact from its onset
     const auto field = analyzer.analyze(rec.frames[ids[i]], rec.rest);
-    benchmark::DoNotOptimize(estimator.update(field, rec.frames[ids[i]]));
+    benchmark::DoNotOptimize(estimator.update(field, rec.frames[ids[i]], pose::SensorSelf{}));
     i = (i + 1) % ids.size();
   }
   state.SetLabel(std::string(o.policy == pose::ModelPolicy::adaptive          ? "adaptive"

@@ -2,7 +2,7 @@
 // 1920x1080 simulated frames of the press scenario at the default noise, one
 // core; the same from MJPEG bytes (TurboJPEG decode straight to grey first);
 // and, in the same run, what a user would pick instead: OpenCV's
-// findChessboardCornersSB + cornerSubPix on both views.
+// findChessboardCornersSB or findChessboardCorners + cornerSubPix on both views.
 // Counters: front_end_ms (detect + track + triangulate, the processor's own
 // stage clocks) and process_ms (including contact and pose).
 #include <benchmark/benchmark.h>
@@ -89,7 +89,9 @@ void BM_FrontEndFromMjpeg(benchmark::State& state) {
 }
 BENCHMARK(BM_FrontEndFromMjpeg)->Unit(benchmark::kMillisecond);
 
-void BM_OpenCvChessboardSB(benchmark::State& state) {
+// OpenCV's detector on both views of the same frames, then cornerSubPix.
+template <typename Find>
+void runOpenCv(benchmark::State& state, Find&& find) {
   const Recording& rec = recording();
   const cv::Size size(rec.pattern.cols, rec.pattern.rows);
   size_t k = 0;
@@ -99,7 +101,7 @@ void BM_OpenCvChessboardSB(benchmark::State& state) {
     for (const cv::Mat& half : {v.left.raw, v.right.raw}) {
       std::vector<cv::Point2f> corners;
       ++views;
-      if (!cv::findChessboardCornersSB(half, size, corners)) {
+      if (!find(half, size, corners)) {
         ++failures;
         continue;
       }
@@ -109,7 +111,21 @@ void BM_OpenCvChessboardSB(benchmark::State& state) {
   state.counters["failed_views"] = benchmark::Counter(double(failures));
   state.counters["views"] = benchmark::Counter(double(views));
 }
+
+void BM_OpenCvChessboardSB(benchmark::State& state) {
+  runOpenCv(state, [](const cv::Mat& half, cv::Size size, std::vector<cv::Point2f>& corners) {
+    return cv::findChessboardCornersSB(half, size, corners);
+  });
+}
 BENCHMARK(BM_OpenCvChessboardSB)->Unit(benchmark::kMillisecond)->Iterations(16);
+
+// The classic detector (adaptive threshold, quad linking), default flags.
+void BM_OpenCvChessboard(benchmark::State& state) {
+  runOpenCv(state, [](const cv::Mat& half, cv::Size size, std::vector<cv::Point2f>& corners) {
+    return cv::findChessboardCorners(half, size, corners);
+  });
+}
+BENCHMARK(BM_OpenCvChessboard)->Unit(benchmark::kMillisecond)->Iterations(16);
 }  // namespace
 
 BENCHMARK_MAIN();

@@ -134,7 +134,7 @@ TEST(SensorApi, OptionsRoundTripThroughYamlAndRejectTypos) {
     FAIL();
   } catch (const Error& e) {
     EXPECT_EQ(e.kind(), ErrorKind::input);
-    EXPECT_NE(std::string(e.what()).find("queue_capacty: unknown option"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("key 'queue_capacty': unknown key"), std::string::npos) << e.what();
   }
   std::ofstream(path) << "%YAML:1.0\nrelease_mm: 2.0\n";  // above press_mm (1.5)
   EXPECT_THROW(SensorOptions::load(path), Error);

@@ -126,5 +126,19 @@ TEST(JpegGreyDecoder, RejectsTruncatedCorruptAndWrongSizeFrames) {
   EXPECT_EQ(out.size(), cv::Size(320, 200));
 }
 
+TEST(JpegGreyDecoder, AFrameCutInsideItsHeaderDoesNotSpoilTheNext) {
+  // TurboJPEG's handle used to report 0x0 for the valid frame after a failed header read
+  JpegGreyDecoder decoder;
+  const auto jpeg = encode(texture(320, 200));
+  const std::vector<std::uint8_t> cut(jpeg.begin(), jpeg.begin() + 100);
+  cv::Mat out;
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_FALSE(decoder.decode(cut.data(), cut.size(), {320, 200}, out).ok);
+    const DecodeResult next = decoder.decode(jpeg.data(), jpeg.size(), {320, 200}, out);
+    EXPECT_TRUE(next.ok) << next.message;
+    EXPECT_EQ(out.size(), cv::Size(320, 200));
+  }
+}
+
 }  // namespace
 }  // namespace onetip::capture

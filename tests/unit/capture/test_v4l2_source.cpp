@@ -4,13 +4,16 @@
 #include <gtest/gtest.h>
 #include <linux/videodev2.h>
 
+#include <fstream>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include "capture/v4l2_format.hpp"
+#include "capture/session_source.hpp"
 #include "capture/v4l2_source.hpp"
 #include "core/error.hpp"
 #include "fake_v4l2_device.hpp"
+#include "scratch_dir.hpp"
 
 namespace onetip::capture {
 namespace {
@@ -217,6 +220,59 @@ TEST(V4l2Source, UnusableDevicesAreInputErrors) {
   EXPECT_FALSE(h264_only->openFd());  // the failed start closed the device
   // Only a real device node path reaches the system layer: none exists here.
   EXPECT_THROW(V4l2Source("/nonexistent/video0"), InputError);
+}
+
+// Record and replay (issue 17): a camera's MJPEG bytes are kept as delivered,
+// and the session replays the same grey frames, indices and timestamps.
+TEST(V4l2Source, MjpegIsRecordedAsDeliveredAndReplaysIdentically) {
+  auto dev = std::make_shared<FakeV4l2Device>();
+  dev->modes = {{kMjpg, 320, 240, {30}}};
+  const std::vector<std::uint8_t> a = jpegOf(testImage(320, 240, 11)), b = jpegOf(testImage(320, 240, 12));
+  dev->payloads.push_back({a, 0, 10.125});
+  dev->payloads.push_back({std::vector<std::uint8_t>(a.begin(), a.begin() + 100), 0, 10.158});  // truncated
+  dev->payloads.push_back({b, 0, 10.191666666666666});
+  const test_support::ScratchDir dir("onetip-session-mjpeg");
+  std::vector<Frame> live;
+  std::string statuses;
+  {
+    V4l2Source src("/dev/video0", smallOptions(), dev);
+    ASSERT_TRUE(src.keepEncodedFrames(true));
+    SessionWriter writer(dir.path().string());
+    for (int i = 0; i < 3; ++i) {
+      Frame f = src.next();
+      statuses += std::string(toString(f.status)) + " " + f.message + "; ";
+      if (!f.ok()) {
+        EXPECT_TRUE(f.encoded.empty());
+        continue;
+      }
+      writer.add(f);
+      live.push_back(std::move(f));
+    }
+    writer.finish();
+  }
+  ASSERT_EQ(live.size(), 2u) << statuses;
+  EXPECT_EQ(live[0].encoded, a);
+  EXPECT_EQ(live[1].encoded, b);
+  std::ifstream in(dir.path() / "frames/000000.jpg", std::ios::binary);
+  EXPECT_EQ(std::vector<std::uint8_t>(std::istreambuf_iterator<char>(in), {}), a);  // not re-encoded
+  SessionSource replay(dir.path().string());
+  for (const Frame& l : live) {
+    const Frame r = replay.next();
+    ASSERT_TRUE(r.ok()) << r.message;
+    EXPECT_EQ(r.index, l.index);
+    EXPECT_EQ(r.timestamp_s, l.timestamp_s);
+    EXPECT_EQ(cv::norm(r.grey, l.grey, cv::NORM_INF), 0.0);
+  }
+  EXPECT_EQ(replay.next().status, FrameStatus::end);
+  EXPECT_EQ(live[1].index, 2);  // the skipped frame keeps its place in the numbering
+}
+
+TEST(V4l2Source, UncompressedModesHaveNoEncodedFramesToKeep) {
+  auto dev = std::make_shared<FakeV4l2Device>();
+  dev->modes = {{kYuyv, 320, 240, {30}}};
+  V4l2Source src("/dev/video0", smallOptions(), dev);
+  EXPECT_FALSE(src.keepEncodedFrames(true));
+  EXPECT_TRUE(src.keepEncodedFrames(false));
 }
 
 }  // namespace

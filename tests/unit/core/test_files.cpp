@@ -21,9 +21,9 @@ namespace {
 void writeText(const fs::path& p, const std::string& s) { std::ofstream(p) << s; }
 }  // namespace
 
-TEST(Files, ReadsTheSharedReferenceCalibration) {
-  const std::string path = std::string(ONETIP_SHARED_DIR) +
-                           "/data/real/opencv_stereo_9x6/reference/reference_calib_sbs_pairs01-09.yaml";
+TEST(Files, ReadsTheReferenceCalibrationOfTheRealPhotos) {
+  const std::string path = std::string(ONETIP_TEST_DATA_DIR) +
+                           "/real/opencv_stereo_9x6/reference/reference_calib_sbs_pairs01-09.yaml";
   const StereoCalibration c = loadCalibration(path);
   EXPECT_EQ(c.image_width, 1280);
   EXPECT_EQ(c.split_x, 640);

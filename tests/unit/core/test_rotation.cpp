@@ -1,4 +1,4 @@
-// Rotation and 6-D input conventions (CONVENTIONS.md) against independent
+// Rotation and 6-D input conventions (docs/reference.md) against independent
 // constructions: axis-angle products and hand-computed motions.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// The sensor frame S derived from rest markers (CONVENTIONS.md), checked
+// The sensor frame S derived from rest markers (docs/reference.md), checked
 // against a grid placed with a known pose in the camera frame.
 #include <gtest/gtest.h>
 

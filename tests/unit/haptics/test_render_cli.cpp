@@ -1,4 +1,4 @@
-// `onetip render` as CONVENTIONS.md states it: output and timing files, and
+// `onetip render` as docs/reference.md states it: output and timing files, and
 // one-line errors with no output file on bad input.
 #include <gtest/gtest.h>
 

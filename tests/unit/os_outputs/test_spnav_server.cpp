@@ -248,6 +248,7 @@ TEST_F(SpnavServerTest, SilentClientGetsEventsAfterTheHelloTimeout) {
 }
 
 TEST_F(SpnavServerTest, ClientThatNeverReadsStallsNeitherServerNorOthers) {
+  options_.idle_timeout_ms = 3600000;  // here the stuck client stays (its eviction: StalledReaderIsEvicted...)
   SpnavServer server(options_);
   server.start();
   RawClient stuck(options_.socket_path);  // connects, then never reads
@@ -339,6 +340,50 @@ TEST_F(SpnavServerTest, ConnectionsBeyondMaxClientsAreClosed) {
   EXPECT_TRUE(c.closedByServer(2000));
   EXPECT_EQ(server.stats().refused, 1u);
   EXPECT_EQ(server.stats().clients, 2);
+}
+
+TEST_F(SpnavServerTest, IdleClientsNeverLockOutANewOne) {
+  options_.max_clients = 2;
+  options_.idle_timeout_ms = 300;
+  SpnavServer server(options_);
+  server.start();
+  RawClient a(options_.socket_path);
+  ASSERT_TRUE(waitFor([&] { return server.stats().clients == 1; }));
+  std::this_thread::sleep_for(std::chrono::milliseconds(50));  // a is the older idle client
+  RawClient b(options_.socket_path);
+  ASSERT_TRUE(waitFor([&] { return server.stats().clients == 2; }));
+  RawClient early(options_.socket_path);  // both were active within the time-out: refused
+  EXPECT_TRUE(early.closedByServer(2000));
+  EXPECT_EQ(server.stats().refused, 1u);
+  std::this_thread::sleep_for(std::chrono::milliseconds(400));  // now both are idle
+  RawClient late(options_.socket_path);
+  EXPECT_TRUE(a.closedByServer(2000));  // the longest idle one made room
+  EXPECT_TRUE(waitFor([&] { return server.stats().idle_evictions == 1 && server.stats().clients == 2; }));
+  std::this_thread::sleep_for(std::chrono::milliseconds(150));  // past the newcomer's hello time-out
+  server.publish(makeEvent(EventType::input, 0, sampleA()));
+  std::int32_t message[8] = {};
+  ASSERT_TRUE(late.recvExact(message, sizeof(message), 2000));
+  EXPECT_EQ(message[0], 0);    // SPNAV_EVENT_MOTION (v0 wire type)
+  EXPECT_EQ(message[1], 175);  // x
+  EXPECT_EQ(server.stats().refused, 1u);
+}
+
+TEST_F(SpnavServerTest, StalledReaderIsEvictedAfterTheIdleTimeout) {
+  options_.idle_timeout_ms = 300;
+  SpnavServer server(options_);
+  server.start();
+  RawClient stuck(options_.socket_path);  // never reads: its socket buffer fills up
+  ASSERT_TRUE(waitFor([&] { return server.stats().clients == 1; }));
+  const auto start = Clock::now();
+  Input6 in = sampleA();
+  for (int i = 0; server.stats().idle_evictions == 0 && Clock::now() - start < std::chrono::seconds(20); ++i) {
+    in.dx = (i % 2) ? 1.0 : 2.0;
+    server.publish(makeEvent(EventType::input, i * 0.001, in));
+    std::this_thread::sleep_for(std::chrono::microseconds(200));
+  }
+  EXPECT_EQ(server.stats().idle_evictions, 1u);
+  EXPECT_TRUE(waitFor([&] { return server.stats().clients == 0; }));
+  EXPECT_TRUE(stuck.closedByServer(5000));
 }
 
 TEST_F(SpnavServerTest, BadOptionsAndPathsGiveClearErrors) {

@@ -43,6 +43,7 @@ struct ReplayFrame {
   int regions = 0;
   bool out_of_range = false;
   pose::PoseModel model = pose::PoseModel::none;
+  int n_stick = 0, n_slip = 0, region_markers = 0;
   std::vector<input::EventType> events;
 };
 

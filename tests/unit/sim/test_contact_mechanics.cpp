@@ -3,6 +3,7 @@
 // Ciavarella-Jager prediction of incipient and gross slip under a slide.
 #include <gtest/gtest.h>
 
+#include "sim/contact_kernel.hpp"
 #include "sim/contact_model.hpp"
 #include "sim/scenario.hpp"
 #include "sim/simulator.hpp"
@@ -108,7 +109,7 @@ TEST(ContactMechanics, SlowSlideShrinksTheStickRegionThenSlipsWherePredicted) {
   const double depth = 1.0;
   model.reset({fingerAt(pad, 0, -0.3)});
   model.advance({fingerAt(pad, 0, depth)});
-  const double predicted_gross_slip = kTangentialComplianceRatio * pad.friction * depth;  // 1.5 mm
+  const double predicted_gross_slip = tangentialComplianceRatio(pad.contact_model) * pad.friction * depth;  // 1.5 mm
   std::vector<int> previous_stick;
   for (int i : model.activeNodes()) previous_stick.push_back(i);
   double gross_slip_at = -1;

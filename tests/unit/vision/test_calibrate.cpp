@@ -23,7 +23,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const std::string kReal = std::string(ONETIP_SHARED_DIR) + "/data/real/opencv_stereo_9x6/";
+const std::string kReal = std::string(ONETIP_TEST_DATA_DIR) + "/real/opencv_stereo_9x6/";
 
 std::vector<cv::Point2f> gridAt(int rows, int cols, double angle_deg, bool mirrored) {
   std::vector<cv::Point2f> g;

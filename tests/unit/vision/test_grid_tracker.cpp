@@ -1,5 +1,5 @@
 // Grid tracker against exact synthetic ground truth (synthetic_board.hpp):
-// ids anchored per CONVENTIONS.md, no id swaps over a sequence of growing
+// ids anchored per docs/reference.md, no id swaps over a sequence of growing
 // deformation, visible markers keep their ids with 20% of the pad occluded,
 // lost markers recovered, flipped views, bad input.
 #include <gtest/gtest.h>

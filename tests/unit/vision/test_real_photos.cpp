@@ -1,5 +1,5 @@
 // Corner detection and id assignment on real photos (OpenCV's sample sets,
-// ../shared/data/real/README.md): every corner of every image, numbering
+// tests/data/real/README.md): every corner of every image, numbering
 // consistent between the two views of a stereo pair, positions against the
 // reference corners (OpenCV findChessboardCorners + cornerSubPix, a +-0.3 px
 // reference) compared without depending on the 180-deg numbering.
@@ -18,7 +18,7 @@
 namespace onetip::vision {
 namespace {
 
-const std::string kStereoDir = std::string(ONETIP_SHARED_DIR) + "/data/real/opencv_stereo_9x6/";
+const std::string kStereoDir = std::string(ONETIP_TEST_DATA_DIR) + "/real/opencv_stereo_9x6/";
 
 using PointTable = std::map<int, cv::Point2f>;  // index -> position
 
@@ -137,7 +137,7 @@ TEST(RealPhotos, SideBySideFramesAnchoredInEachView) {
 }
 
 TEST(RealPhotos, SyntheticChessboardPngAgainstGroundTruth) {
-  const std::string dir = std::string(ONETIP_SHARED_DIR) + "/data/real/opencv_chessboard_png/";
+  const std::string dir = std::string(ONETIP_TEST_DATA_DIR) + "/real/opencv_chessboard_png/";
   const cv::Mat rgba = cv::imread(dir + "chessboard.png", cv::IMREAD_UNCHANGED);
   ASSERT_FALSE(rgba.empty());
   cv::Mat grey;

@@ -1,0 +1,172 @@
+#!/usr/bin/python3
+"""Charts and the summary table of the pose campaign (issue 15).
+
+Inputs (build/bench/pose_campaign, see README.md): docs/pose/data/campaign.csv
+(this estimator) and docs/pose/data/campaign_baseline.csv (the estimator of
+session 5, same seeds, same simulator). Outputs:
+  campaign_conditions.png   worst linear-range RMSE per run against each condition
+  campaign_envelope.png     share of diverged runs per condition bin
+  campaign_accuracy_time.png accuracy against time per frame, per contact model
+  data/campaign_summary.csv the figures the README quotes
+Run: /usr/bin/python3 docs/pose/make_campaign_charts.py [data_dir] [out_dir]
+"""
+import csv
+import math
+import os
+import statistics
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+AXES = ["dx", "dy", "dz", "yaw", "pitch", "roll"]
+ESTIMATORS = [("campaign_baseline.csv", "session 5 (tuned thresholds)", "tab:gray"),
+              ("campaign.csv", "session 6 (derived thresholds, rolling-aware)", "tab:blue")]
+
+
+def rows(path):
+    with open(path, newline="") as f:
+        return list(csv.DictReader(f))
+
+
+def worst(r, kind):
+    axes = AXES[:3] if kind == "mm" else AXES[3:]
+    return max(float(r["rmse_" + a]) for a in axes)
+
+
+def percentile(values, q):
+    values = sorted(values)
+    if not values:
+        return float("nan")
+    k = (len(values) - 1) * q
+    lo, hi = math.floor(k), math.ceil(k)
+    return values[lo] + (values[hi] - values[lo]) * (k - lo)
+
+
+def summary(all_rows, name):
+    out = []
+    for level in ("field", "image"):
+        rs = [r for r in all_rows if r["level"] == level and int(r["linear_frames"]) > 0]
+        if not rs:
+            continue
+        row = {"estimator": name, "level": level, "runs": len(rs),
+               "diverged": sum(r["diverged"] == "1" for r in rs)}
+        for a in AXES:
+            v = [float(r["rmse_" + a]) for r in rs]
+            row["median_" + a] = statistics.median(v)
+            row["p95_" + a] = percentile(v, 0.95)
+        out.append(row)
+    return out
+
+
+CONDITIONS = [("noise_grey", "image noise (grey levels)", False), ("markers", "markers per side", False),
+              ("fps", "frame rate (fps)", True), ("friction", "friction", False),
+              ("peak_speed_mm_s", "fastest slide (mm/s)", False), ("peak_rate_deg_s", "fastest turn (deg/s)", False)]
+
+
+def conditions_chart(data, out_dir):
+    fig, grid = plt.subplots(2, len(CONDITIONS), figsize=(4 * len(CONDITIONS), 7), sharey="row")
+    for col, (key, label, log) in enumerate(CONDITIONS):
+        for row_i, kind in enumerate(("mm", "deg")):
+            ax = grid[row_i][col]
+            for (_, name, colour), rs in data:
+                rs = [r for r in rs if r["level"] == "field" and int(r["linear_frames"]) > 0]
+                x = [float(r[key]) for r in rs]
+                y = [worst(r, kind) for r in rs]
+                ax.scatter(x, y, s=6, alpha=0.5, color=colour, label=name)
+            ax.set_yscale("log")
+            if log:
+                ax.set_xscale("log")
+            ax.axhline(0.1 if kind == "mm" else 2.6, color="red", lw=0.8, ls="--")
+            if row_i == 1:
+                ax.set_xlabel(label)
+            if col == 0:
+                ax.set_ylabel("worst translation RMSE (mm)" if kind == "mm" else "worst rotation RMSE (deg)")
+    grid[0][0].legend(fontsize=8, loc="upper left")
+    fig.suptitle("Pose campaign, field level: each run's worst axis in the linear range against its conditions "
+                 "(red: the paper's worst figures)")
+    fig.tight_layout()
+    fig.savefig(os.path.join(out_dir, "campaign_conditions.png"), dpi=80)
+    plt.close(fig)
+
+
+def envelope_chart(data, out_dir):
+    keys = [("model", "contact model"), ("indenter", "indenter"), ("markers", "markers per side"),
+            ("fps", "frame rate")]
+    fig, grid = plt.subplots(1, len(keys), figsize=(4.5 * len(keys), 4))
+    for ax, (key, label) in zip(grid, keys):
+        for offset, ((_, name, colour), rs) in zip((-0.2, 0.2), data):
+            rs = [r for r in rs if r["level"] == "field"]
+            if key == "fps":
+                bins = [(15, 30), (30, 60), (60, 120), (120, 241)]
+                groups = [("%d-%d" % b, [r for r in rs if b[0] <= float(r["fps"]) < b[1]]) for b in bins]
+            else:
+                values = sorted({r[key] for r in rs}, key=lambda v: (len(v), v))
+                groups = [(v, [r for r in rs if r[key] == v]) for v in values]
+            share = [100.0 * sum(r["diverged"] == "1" for r in g) / max(1, len(g)) for _, g in groups]
+            ax.bar([i + offset for i in range(len(groups))], share, width=0.4, color=colour, label=name)
+            ax.set_xticks(range(len(groups)))
+            ax.set_xticklabels([g for g, _ in groups], rotation=45, fontsize=8)
+        ax.set_xlabel(label)
+        ax.set_ylim(0, 100)
+    grid[0].set_ylabel("runs diverged (%)")
+    grid[0].legend(fontsize=8, loc="lower left")
+    fig.suptitle("Failure envelope: share of runs with an axis beyond 1 mm / 5 deg for more than 3 frames")
+    fig.tight_layout()
+    fig.savefig(os.path.join(out_dir, "campaign_envelope.png"), dpi=80)
+    plt.close(fig)
+
+
+def accuracy_time_chart(data, out_dir):
+    fig, (a1, a2) = plt.subplots(1, 2, figsize=(11, 4.5))
+    for (_, name, colour), rs in data:
+        for model, marker in (("halfspace", "o"), ("foundation", "s")):
+            g = [r for r in rs if r["level"] == "field" and r["model"] == model and int(r["linear_frames"]) > 0]
+            if not g:
+                continue
+            ms = statistics.median(float(r["ms_per_frame"]) for r in g)
+            a1.scatter(ms, statistics.median(worst(r, "mm") for r in g), color=colour, marker=marker, s=60,
+                       label="%s, %s" % (name, model))
+            a2.scatter(ms, statistics.median(worst(r, "deg") for r in g), color=colour, marker=marker, s=60)
+    a1.set_xlabel("contact + pose per frame, median (ms)")
+    a2.set_xlabel("contact + pose per frame, median (ms)")
+    a1.set_ylabel("median of the runs' worst translation RMSE (mm)")
+    a2.set_ylabel("median of the runs' worst rotation RMSE (deg)")
+    a1.legend(fontsize=8)
+    fig.suptitle("Accuracy against time per frame, per contact model (field level)")
+    fig.tight_layout()
+    fig.savefig(os.path.join(out_dir, "campaign_accuracy_time.png"), dpi=80)
+    plt.close(fig)
+
+
+def main():
+    data_dir = sys.argv[1] if len(sys.argv) > 1 else os.path.join(HERE, "data")
+    out_dir = sys.argv[2] if len(sys.argv) > 2 else HERE
+    data = []
+    table = []
+    for file, name, colour in ESTIMATORS:
+        path = os.path.join(data_dir, file)
+        if os.path.exists(path):
+            rs = rows(path)
+            data.append(((file, name, colour), rs))
+            table += summary(rs, name)
+    conditions_chart(data, out_dir)
+    envelope_chart(data, out_dir)
+    accuracy_time_chart(data, out_dir)
+    fields = list(table[0].keys())
+    with open(os.path.join(data_dir, "campaign_summary.csv"), "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=fields)
+        w.writeheader()
+        for row in table:
+            w.writerow({k: ("%.4g" % v if isinstance(v, float) else v) for k, v in row.items()})
+    for row in table:
+        print(row["estimator"], row["level"], "runs", row["runs"], "diverged", row["diverged"],
+              "median", " ".join("%.3f" % row["median_" + a] for a in AXES),
+              "p95", " ".join("%.3f" % row["p95_" + a] for a in AXES))
+
+
+if __name__ == "__main__":
+    main()

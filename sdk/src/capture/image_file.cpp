@@ -1,0 +1,161 @@
+#include "capture/image_file.hpp"
+
+#include <fstream>
+#include <opencv2/imgcodecs.hpp>
+#include <vector>
+
+#include "core/error.hpp"
+
+namespace onetip::capture {
+
+namespace {
+
+std::uint32_t be16(const std::uint8_t* p) { return static_cast<std::uint32_t>(p[0] << 8 | p[1]); }
+std::uint32_t le16(const std::uint8_t* p) { return static_cast<std::uint32_t>(p[1] << 8 | p[0]); }
+std::uint32_t be32(const std::uint8_t* p) { return be16(p) << 16 | be16(p + 2); }
+std::uint32_t le32(const std::uint8_t* p) { return le16(p + 2) << 16 | le16(p); }
+
+std::optional<cv::Size> sizeOf(std::int64_t w, std::int64_t h) {
+  if (w <= 0 || h <= 0 || w > (1 << 30) || h > (1 << 30)) return cv::Size{-1, -1};  // declared, but absurd
+  return cv::Size{static_cast<int>(w), static_cast<int>(h)};
+}
+
+std::optional<cv::Size> pngSize(const std::uint8_t* d, std::size_t n) {
+  static const std::uint8_t sig[8] = {0x89, 'P', 'N', 'G', 0x0D, 0x0A, 0x1A, 0x0A};
+  if (n < 24 || !std::equal(sig, sig + 8, d) || !std::equal(d + 12, d + 16, "IHDR")) return std::nullopt;
+  return sizeOf(be32(d + 16), be32(d + 20));
+}
+
+bool isJpegFrameMarker(std::uint8_t m) {  // SOF0..SOF15 except DHT (C4), JPG (C8), DAC (CC)
+  return m >= 0xC0 && m <= 0xCF && m != 0xC4 && m != 0xC8 && m != 0xCC;
+}
+
+std::optional<cv::Size> jpegSize(const std::uint8_t* d, std::size_t n) {
+  if (n < 4 || d[0] != 0xFF || d[1] != 0xD8) return std::nullopt;
+  std::size_t i = 2;
+  while (i + 1 < n) {
+    if (d[i] != 0xFF) return std::nullopt;
+    while (i + 1 < n && d[i + 1] == 0xFF) ++i;  // fill bytes
+    if (i + 1 >= n) break;
+    const std::uint8_t m = d[i + 1];
+    i += 2;
+    if (m == 0x01 || (m >= 0xD0 && m <= 0xD8)) continue;  // markers without a segment
+    if (m == 0xD9 || m == 0xDA || i + 2 > n) return std::nullopt;  // EOI / scan before any frame header
+    const std::size_t length = be16(d + i);
+    if (length < 2) return std::nullopt;
+    if (isJpegFrameMarker(m)) {
+      if (i + 7 > n) return std::nullopt;
+      return sizeOf(be16(d + i + 5), be16(d + i + 3));  // P, Y (height), X (width)
+    }
+    i += length;
+  }
+  return std::nullopt;
+}
+
+std::optional<cv::Size> bmpSize(const std::uint8_t* d, std::size_t n) {
+  if (n < 26 || d[0] != 'B' || d[1] != 'M') return std::nullopt;
+  if (le32(d + 14) == 12) return sizeOf(le16(d + 18), le16(d + 20));  // OS/2 core header
+  const auto h = static_cast<std::int32_t>(le32(d + 22));             // negative: top-down rows
+  return sizeOf(static_cast<std::int32_t>(le32(d + 18)), h < 0 ? -static_cast<std::int64_t>(h) : h);
+}
+
+std::optional<cv::Size> tiffSize(const std::uint8_t* d, std::size_t n) {
+  if (n < 8) return std::nullopt;
+  const bool le = d[0] == 'I' && d[1] == 'I' && d[2] == 42 && d[3] == 0;
+  const bool be = d[0] == 'M' && d[1] == 'M' && d[2] == 0 && d[3] == 42;
+  if (!le && !be) return std::nullopt;
+  const auto u16 = [&](std::size_t at) { return le ? le16(d + at) : be16(d + at); };
+  const auto u32 = [&](std::size_t at) { return le ? le32(d + at) : be32(d + at); };
+  const std::size_t ifd = u32(4);
+  if (ifd > n || n - ifd < 2) return std::nullopt;
+  const std::size_t entries = u16(ifd);
+  std::int64_t w = -1, h = -1;
+  for (std::size_t k = 0; k < entries; ++k) {
+    const std::size_t e = ifd + 2 + 12 * k;
+    if (e + 12 > n) return std::nullopt;
+    const std::uint32_t tag = u16(e), type = u16(e + 2);
+    if (tag != 256 && tag != 257) continue;
+    const std::int64_t v = type == 3 ? u16(e + 8) : type == 4 ? u32(e + 8) : -1;
+    (tag == 256 ? w : h) = v;
+  }
+  if (w < 0 || h < 0) return std::nullopt;
+  return sizeOf(w, h);
+}
+
+std::string sizeText(cv::Size s) { return std::to_string(s.width) + "x" + std::to_string(s.height); }
+
+}  // namespace
+
+std::optional<cv::Size> declaredImageSize(const std::uint8_t* data, std::size_t bytes) {
+  if (!data) return std::nullopt;
+  for (auto reader : {pngSize, jpegSize, bmpSize, tiffSize})
+    if (auto s = reader(data, bytes)) return s;
+  return std::nullopt;
+}
+
+std::optional<std::string> imageHeaderProblem(const std::uint8_t* data, std::size_t bytes, const ImageLimits& limits,
+                                              cv::Size& declared) {
+  const std::optional<cv::Size> size = declaredImageSize(data, bytes);
+  if (!size) return "not a PNG, JPEG, BMP or TIFF image (unrecognised or truncated header)";
+  declared = *size;
+  if (declared.width <= 0) return "the image header declares an impossible size";
+  if (limits.expected.width > 0 && declared != limits.expected)
+    return "wrong frame size " + sizeText(declared) + " (expected " + sizeText(limits.expected) + ")";
+  if (static_cast<std::int64_t>(declared.width) * declared.height > limits.max_pixels)
+    return "the image header declares " + sizeText(declared) + " pixels, more than the " +
+           std::to_string(limits.max_pixels) + "-pixel bound";
+  return std::nullopt;
+}
+
+std::optional<std::string> readFileBytes(const std::string& path, std::size_t max_bytes,
+                                         std::vector<std::uint8_t>& bytes) {
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
+  const std::streamoff size = in ? static_cast<std::streamoff>(in.tellg()) : -1;
+  if (size < 0) return "cannot read the file";
+  if (static_cast<std::uint64_t>(size) > max_bytes)
+    return "file of " + std::to_string(size) + " bytes, over the " + std::to_string(max_bytes) +
+           "-byte bound for one frame";
+  bytes.resize(static_cast<std::size_t>(size));
+  in.seekg(0);
+  if (!bytes.empty() && !in.read(reinterpret_cast<char*>(bytes.data()), size)) return "cannot read the file";
+  return std::nullopt;
+}
+
+GreyImage decodeGreyImage(const std::uint8_t* data, std::size_t bytes, const ImageLimits& limits) {
+  GreyImage out;
+  cv::Size declared;
+  out.problem = imageHeaderProblem(data, bytes, limits, declared);
+  if (out.problem) return out;
+  try {
+    const cv::Mat buffer(1, static_cast<int>(bytes), CV_8UC1, const_cast<std::uint8_t*>(data));
+    out.grey = cv::imdecode(buffer, cv::IMREAD_GRAYSCALE);
+  } catch (const std::exception& e) {
+    out.grey.release();
+    out.problem = std::string("cannot decode: ") + e.what();
+    return out;
+  }
+  if (out.grey.empty())
+    out.problem = "empty frame (could not be decoded)";
+  else if (out.grey.size() != declared)
+    out.problem = "decoded size " + sizeText(out.grey.size()) + " differs from the header's " + sizeText(declared);
+  if (out.problem) out.grey.release();
+  return out;
+}
+
+GreyImage readGreyImage(const std::string& path, const ImageLimits& limits) {
+  GreyImage out;
+  std::vector<std::uint8_t> bytes;
+  out.problem = readFileBytes(path, limits.max_file_bytes, bytes);
+  if (out.problem) return out;
+  return decodeGreyImage(bytes.data(), bytes.size(), limits);
+}
+
+cv::Mat loadGreyImage(const std::string& path, cv::Size expected) {
+  ImageLimits limits;
+  limits.expected = expected;
+  GreyImage image = readGreyImage(path, limits);
+  if (image.problem) throw InputError(path + ": " + *image.problem);
+  return image.grey;
+}
+
+}  // namespace onetip::capture

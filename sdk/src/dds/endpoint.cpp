@@ -1,0 +1,99 @@
+#include "dds/endpoint.hpp"
+
+#include <vector>
+
+namespace onetip::dds {
+namespace {
+
+dds_entity_t makeTopic(const Participant& p, const dds_topic_descriptor_t& type, const std::string& name) {
+  return checkDds(dds_create_topic(p.handle(), &type, name.c_str(), nullptr, nullptr), "dds topic " + name);
+}
+
+}  // namespace
+
+Writer::Writer(const Participant& participant, const dds_topic_descriptor_t& type, const std::string& topic_name,
+               StreamKind kind, const StreamQos& qos)
+    : name_(topic_name) {
+  topic_ = makeTopic(participant, type, name_);
+  const QosPtr q = writerQos(kind, qos);
+  writer_ = dds_create_writer(participant.handle(), topic_, q.get(), nullptr);
+  if (writer_ < 0) {
+    dds_delete(topic_);
+    checkDds(writer_, "dds writer on " + name_);
+  }
+}
+
+Writer::~Writer() {
+  dds_delete(writer_);
+  dds_delete(topic_);
+}
+
+void Writer::write(const void* sample) { checkDds(dds_write(writer_, sample), "dds write on " + name_); }
+
+int Writer::matchedReaders() const {
+  dds_publication_matched_status_t s{};
+  checkDds(dds_get_publication_matched_status(writer_, &s), "dds matched status of " + name_);
+  return static_cast<int>(s.current_count);
+}
+
+Reader::Reader(const Participant& participant, const dds_topic_descriptor_t& type, const std::string& topic_name,
+               StreamKind kind, const StreamQos& qos, double requested_deadline_s)
+    : name_(topic_name) {
+  topic_ = makeTopic(participant, type, name_);
+  const QosPtr q = readerQos(kind, qos, requested_deadline_s);
+  reader_ = dds_create_reader(participant.handle(), topic_, q.get(), nullptr);
+  if (reader_ < 0) {
+    dds_delete(topic_);
+    checkDds(reader_, "dds reader on " + name_);
+  }
+  waitset_ = checkDds(dds_create_waitset(participant.handle()), "dds waitset for " + name_);
+  condition_ = checkDds(dds_create_readcondition(reader_, DDS_ANY_STATE), "dds read condition for " + name_);
+  checkDds(dds_waitset_attach(waitset_, condition_, reader_), "dds waitset attach for " + name_);
+}
+
+Reader::~Reader() {
+  dds_waitset_detach(waitset_, condition_);
+  dds_delete(condition_);
+  dds_delete(waitset_);
+  dds_delete(reader_);
+  dds_delete(topic_);
+}
+
+int Reader::take(const Visit& visit, int max) {
+  std::vector<void*> samples(static_cast<size_t>(max), nullptr);
+  std::vector<dds_sample_info_t> infos(static_cast<size_t>(max));
+  const dds_return_t n = checkDds(dds_take(reader_, samples.data(), infos.data(), static_cast<size_t>(max),
+                                           static_cast<uint32_t>(max)),
+                                  "dds take on " + name_);
+  int visited = 0;
+  try {
+    for (dds_return_t i = 0; i < n; ++i)
+      if (infos[static_cast<size_t>(i)].valid_data) {
+        visit(samples[static_cast<size_t>(i)], infos[static_cast<size_t>(i)]);
+        ++visited;
+      }
+  } catch (...) {
+    if (n > 0) dds_return_loan(reader_, samples.data(), n);
+    throw;
+  }
+  if (n > 0) dds_return_loan(reader_, samples.data(), n);
+  return visited;
+}
+
+bool Reader::waitForData(double timeout_s) {
+  return checkDds(dds_waitset_wait(waitset_, nullptr, 0, toDuration(timeout_s)), "dds wait on " + name_) > 0;
+}
+
+int Reader::matchedWriters() const {
+  dds_subscription_matched_status_t s{};
+  checkDds(dds_get_subscription_matched_status(reader_, &s), "dds matched status of " + name_);
+  return static_cast<int>(s.current_count);
+}
+
+int Reader::aliveWriters() const {
+  dds_liveliness_changed_status_t s{};
+  checkDds(dds_get_liveliness_changed_status(reader_, &s), "dds liveliness of " + name_);
+  return static_cast<int>(s.alive_count);
+}
+
+}  // namespace onetip::dds

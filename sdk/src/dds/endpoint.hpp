@@ -1,0 +1,60 @@
+// dds/endpoint.hpp — a typed DDS writer or reader on one topic of a
+// Participant, with the QoS of its stream kind (stream_qos.hpp).
+//
+// Samples are the C structs idlc generates from idl/ (e.g.
+// sensor_msgs_msg_dds__Joy_), passed as void* with the topic descriptor that
+// goes with them. Reader::take hands each valid sample and its DDS sample
+// info (source_timestamp: the writer's wall clock, ns since the epoch) to a
+// callback while the samples are on loan, then returns the loan.
+#pragma once
+
+#include <functional>
+#include <string>
+
+#include "dds/participant.hpp"
+#include "dds/stream_qos.hpp"
+
+namespace onetip::dds {
+
+class Writer {
+ public:
+  Writer(const Participant& participant, const dds_topic_descriptor_t& type, const std::string& topic_name,
+         StreamKind kind, const StreamQos& qos = {});
+  ~Writer();
+  Writer(const Writer&) = delete;
+  Writer& operator=(const Writer&) = delete;
+
+  void write(const void* sample);  // std::runtime_error when DDS refuses
+  int matchedReaders() const;
+  const std::string& topicName() const noexcept { return name_; }
+
+ private:
+  std::string name_;
+  dds_entity_t topic_ = 0, writer_ = 0;
+};
+
+class Reader {
+ public:
+  using Visit = std::function<void(const void* sample, const dds_sample_info_t& info)>;
+  Reader(const Participant& participant, const dds_topic_descriptor_t& type, const std::string& topic_name,
+         StreamKind kind, const StreamQos& qos = {},
+         double requested_deadline_s = std::numeric_limits<double>::infinity());
+  ~Reader();
+  Reader(const Reader&) = delete;
+  Reader& operator=(const Reader&) = delete;
+
+  // Takes every available sample (up to `max`), visiting the valid ones; returns how many were visited.
+  int take(const Visit& visit, int max = 64);
+  // Blocks until data is available or timeout_s passes; true when data is there.
+  bool waitForData(double timeout_s);
+  int matchedWriters() const;
+  // Writers whose liveliness is asserted now (0 after the publisher's lease expired).
+  int aliveWriters() const;
+  const std::string& topicName() const noexcept { return name_; }
+
+ private:
+  std::string name_;
+  dds_entity_t topic_ = 0, reader_ = 0, waitset_ = 0, condition_ = 0;
+};
+
+}  // namespace onetip::dds

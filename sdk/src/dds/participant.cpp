@@ -1,0 +1,94 @@
+#include "dds/participant.hpp"
+
+#include <arpa/inet.h>
+
+#include <regex>
+#include <stdexcept>
+
+#include "core/error.hpp"
+
+namespace onetip::dds {
+namespace {
+
+const std::regex kToken("[A-Za-z_][A-Za-z0-9_]*");
+
+bool isRosName(const std::string& name) {
+  if (name.empty()) return false;
+  size_t start = 0;
+  for (;;) {
+    const size_t slash = name.find('/', start);
+    const std::string token = name.substr(start, slash == std::string::npos ? std::string::npos : slash - start);
+    if (!std::regex_match(token, kToken)) return false;
+    if (slash == std::string::npos) return true;
+    start = slash + 1;
+  }
+}
+
+std::string stripLeadingSlash(const std::string& s) { return !s.empty() && s[0] == '/' ? s.substr(1) : s; }
+
+}  // namespace
+
+void DdsOptions::validate() const {
+  if (domain < 0 || domain > 232) throw InputError("dds domain " + std::to_string(domain) + ": must be 0 .. 232");
+  if (!isRosName(stripLeadingSlash(ros_namespace)))
+    throw InputError("dds namespace '" + ros_namespace + "': not a ROS name (tokens [A-Za-z_][A-Za-z0-9_]* joined by '/')");
+  if (!interface.empty() && !std::regex_match(interface, std::regex("[A-Za-z0-9_.@-]{1,15}")))
+    throw InputError("dds interface '" + interface + "': not a network interface name");
+  for (const std::string& p : peers) {
+    in_addr addr{};
+    if (inet_pton(AF_INET, p.c_str(), &addr) != 1) throw InputError("dds peer '" + p + "': not an IPv4 address");
+  }
+}
+
+std::string rosTopicName(const std::string& ros_namespace, const std::string& name) {
+  const std::string ns = stripLeadingSlash(ros_namespace);
+  if (!isRosName(ns)) throw InputError("dds namespace '" + ros_namespace + "': not a ROS name");
+  if (!isRosName(name)) throw InputError("dds topic name '" + name + "': not a ROS name");
+  return "rt/" + ns + "/" + name;
+}
+
+std::string cycloneConfig(const DdsOptions& options) {
+  if (options.interface.empty() && options.peers.empty()) return {};
+  std::string xml = "<CycloneDDS><Domain Id=\"any\"><General>";
+  if (!options.interface.empty())
+    xml += "<Interfaces><NetworkInterface name=\"" + options.interface + "\"/></Interfaces>";
+  if (!options.peers.empty()) xml += "<AllowMulticast>false</AllowMulticast>";
+  xml += "</General>";
+  if (!options.peers.empty()) {
+    // Fixed participant indices, so a peer's unicast discovery ports are known.
+    xml += "<Discovery><ParticipantIndex>auto</ParticipantIndex><MaxAutoParticipantIndex>30</MaxAutoParticipantIndex><Peers>";
+    for (const std::string& p : options.peers) xml += "<Peer Address=\"" + p + "\"/>";
+    xml += "</Peers></Discovery>";
+  }
+  return xml + "</Domain></CycloneDDS>";
+}
+
+dds_return_t checkDds(dds_return_t rc, const std::string& what) {
+  if (rc < 0) throw std::runtime_error(what + ": " + dds_strretcode(rc));
+  return rc;
+}
+
+Participant::Participant(const DdsOptions& options) : options_(options) {
+  options_.validate();
+  options_.ros_namespace = stripLeadingSlash(options_.ros_namespace);
+  const auto domain = static_cast<dds_domainid_t>(options_.domain);
+  const std::string config = cycloneConfig(options_);
+  if (!config.empty()) {
+    domain_ = dds_create_domain(domain, config.c_str());
+    if (domain_ < 0)  // almost always an interface that does not exist or has no IPv4 address
+      throw InputError("dds interface '" + options_.interface + "' / peers: Cyclone DDS refused the configuration (" +
+                       dds_strretcode(domain_) + "); is the interface up with an IPv4 address?");
+  }
+  participant_ = dds_create_participant(domain, nullptr, nullptr);
+  if (participant_ < 0) {
+    if (domain_ > 0) dds_delete(domain_);
+    checkDds(participant_, "dds participant on domain " + std::to_string(options_.domain));
+  }
+}
+
+Participant::~Participant() {
+  dds_delete(participant_);
+  if (domain_ > 0) dds_delete(domain_);
+}
+
+}  // namespace onetip::dds

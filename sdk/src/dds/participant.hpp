@@ -1,0 +1,59 @@
+// dds/participant.hpp — one DDS domain participant (Eclipse Cyclone DDS) and
+// ROS 2's topic naming, shared by every onetip publisher and subscriber.
+//
+// Topics follow ROS 2's DDS mapping: the ROS topic /<namespace>/<name> is the
+// DDS topic "rt/<namespace>/<name>" (docs/dds/README.md lists onetip's topics).
+// A namespace is one or more ROS name tokens ([A-Za-z_][A-Za-z0-9_]*) joined by
+// '/', given with or without a leading '/'.
+//
+// Network: by default Cyclone DDS picks its interface and discovers peers by
+// multicast (or reads CYCLONEDDS_URI). `interface` restricts it to one network
+// interface (e.g. "lo" or a veth in a network namespace) and `peers` lists
+// unicast discovery addresses (needed where the interface has no multicast,
+// such as the loopback); both together make a domain that uses no other
+// address.
+#pragma once
+
+#include <dds/dds.h>
+
+#include <string>
+#include <vector>
+
+namespace onetip::dds {
+
+struct DdsOptions {
+  int domain = 0;                  // DDS domain id, 0 .. 232 (ROS_DOMAIN_ID)
+  std::string ros_namespace = "onetip";
+  std::string interface;           // network interface name; empty: Cyclone's default
+  std::vector<std::string> peers;  // unicast discovery peers (IPv4 addresses)
+  void validate() const;           // throws InputError naming the bad field
+};
+
+// "rt/<namespace>/<name>"; InputError for a namespace or name that is not a ROS name.
+std::string rosTopicName(const std::string& ros_namespace, const std::string& name);
+// The Cyclone DDS configuration (XML) for `interface` and `peers`; empty when neither is set.
+std::string cycloneConfig(const DdsOptions& options);
+
+class Participant {
+ public:
+  // InputError for bad options or an interface Cyclone DDS cannot use;
+  // std::runtime_error when DDS refuses otherwise (with its message).
+  explicit Participant(const DdsOptions& options);
+  ~Participant();
+  Participant(const Participant&) = delete;
+  Participant& operator=(const Participant&) = delete;
+
+  dds_entity_t handle() const noexcept { return participant_; }
+  const DdsOptions& options() const noexcept { return options_; }
+  std::string topic(const std::string& name) const { return rosTopicName(options_.ros_namespace, name); }
+
+ private:
+  DdsOptions options_;
+  dds_entity_t domain_ = 0;
+  dds_entity_t participant_ = 0;
+};
+
+// Throws std::runtime_error("<what>: <DDS error text>") when rc < 0; returns rc.
+dds_return_t checkDds(dds_return_t rc, const std::string& what);
+
+}  // namespace onetip::dds

@@ -1,0 +1,44 @@
+// dds/stream_qos.hpp — the QoS of each kind of onetip stream (docs/dds/README.md).
+//
+//   high_rate (joy, pose, markers, haptic/sensed): BEST_EFFORT, KEEP_LAST 1,
+//       VOLATILE. A late sample is worth less than the next one, so nothing is
+//       resent or queued. The writer offers a DEADLINE of `deadline_s` (a
+//       reader may request that or longer, and is told when the period passes
+//       without a sample) and AUTOMATIC LIVELINESS with `lease_s`, so readers
+//       learn within that time that the publishing process is gone.
+//   events (contact begin/end, press/release, state changes, errors):
+//       RELIABLE (a writer blocks at most max_blocking_s on a full queue),
+//       KEEP_LAST `event_history`, VOLATILE, the same liveliness; no deadline
+//       (events are sporadic).
+// ROS 2 equivalents: high_rate is rclcpp::SensorDataQoS() (ROS 2 subscribers
+// must ask for best effort, e.g. `ros2 topic echo --qos-reliability best_effort`);
+// events is the default reliable profile with a deeper history.
+#pragma once
+
+#include <dds/dds.h>
+
+#include <limits>
+#include <memory>
+
+namespace onetip::dds {
+
+enum class StreamKind { high_rate, events };
+
+struct StreamQos {
+  double deadline_s = 0.1;       // offered by high-rate writers
+  double lease_s = 0.5;          // automatic liveliness lease
+  int event_history = 256;       // events: samples kept per writer / reader
+  double max_blocking_s = 0.1;   // events: reliable write blocking limit
+  void validate() const;         // throws InputError naming the bad field
+};
+
+using QosPtr = std::unique_ptr<dds_qos_t, void (*)(dds_qos_t*)>;
+
+QosPtr writerQos(StreamKind kind, const StreamQos& q);
+// requested_deadline_s: what the reader asks for (infinite: no deadline); must
+// be >= the writer's offer for the two to match.
+QosPtr readerQos(StreamKind kind, const StreamQos& q,
+                 double requested_deadline_s = std::numeric_limits<double>::infinity());
+dds_duration_t toDuration(double seconds);  // DDS_INFINITY for infinity
+
+}  // namespace onetip::dds

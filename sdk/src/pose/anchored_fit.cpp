@@ -1,0 +1,70 @@
+#include "pose/anchored_fit.hpp"
+
+#include <cmath>
+
+namespace onetip::pose {
+
+AnchoredFit fitAnchored(const contact::StickSlipClassifier& classifier, const contact::ContactField& field,
+                        std::vector<int>& ids, const MarkerField& now, const Eigen::Isometry3d& pose,
+                        const EstimatorThresholds& t, double rotation_significance) {
+  std::vector<Eigen::Vector3d> from, to, relax;
+  for (int id : ids) {
+    const size_t i = static_cast<size_t>(id);
+    from.push_back(pose * classifier.anchor(id));
+    to.push_back(now.position[i]);
+    // A marker relaxes along minus its tangential displacement.
+    const Eigen::Vector3d& u = field.displacement[i];
+    const Eigen::Vector3d& n = field.normal[i];
+    const Eigen::Vector3d tangential = u - u.dot(n) * n;
+    const double size = tangential.norm();
+    relax.push_back(size > 1e-9 ? Eigen::Vector3d(-tangential / size) : Eigen::Vector3d::Zero());
+  }
+  const TrimmedFit trimmed = fitRigidMotionTrimmed(from, to, relax, t.robust_mm, t.slip_mm);
+  if (trimmed.fit.ok) {
+    size_t kept = 0;
+    for (size_t i = 0; i < from.size(); ++i)
+      if (trimmed.inlier[i]) {
+        from[kept] = from[i];
+        to[kept] = to[i];
+        ids[kept++] = ids[i];
+      }
+    from.resize(kept);
+    to.resize(kept);
+    ids.resize(kept);
+  }
+  const Eigen::Vector2d spread = planarSpread(from);
+  const auto significant = [&](const RigidFit& fit, double extent) {
+    const double sigma = std::sqrt(2.0) * t.noise_mm / (extent * std::sqrt(static_cast<double>(from.size())));
+    return fit.ok && Eigen::AngleAxisd(fit.motion.linear()).angle() >= rotation_significance * sigma;
+  };
+  AnchoredFit out;
+  if (trimmed.fit.ok && spread.x() >= t.min_spread_mm && significant(trimmed.fit, spread.x())) {
+    out.fit = trimmed.fit;
+    out.rotation_supported = true;
+    return out;
+  }
+  if (spread.x() < t.min_spread_mm && spread.y() >= t.min_spread_mm) {
+    const RigidFit yaw = fitRotationAboutZ(from, to);
+    if (significant(yaw, spread.y())) {
+      out.fit = yaw;
+      return out;
+    }
+  }
+  out.fit = fitTranslation(from, to);
+  return out;
+}
+
+RigidFit fitConsecutive(const std::vector<int>& members, const MarkerField& before, const MarkerField& now,
+                        double robust_mm, bool translation_only) {
+  std::vector<Eigen::Vector3d> from, to;
+  for (int id : members) {
+    const size_t i = static_cast<size_t>(id);
+    if (!before.valid[i] || !now.valid[i]) continue;
+    from.push_back(before.position[i]);
+    to.push_back(now.position[i]);
+  }
+  if (translation_only) return fitTranslation(from, to);
+  return robust_mm > 0 ? fitRigidMotionRobust(from, to, robust_mm) : fitRigidMotion(from, to);
+}
+
+}  // namespace onetip::pose

@@ -1,0 +1,44 @@
+// pose/anchored_fit.hpp — the finger's motion from its sticking markers.
+//
+// Each stick marker i has an anchor a_i in the finger's frame
+// (contact/stick_slip_classifier.hpp); under the previous pose estimate T its
+// reference is T a_i, and the motion dT maps those references onto the
+// markers' positions p_i now (S, mm). The fit is trimmed of markers drifting
+// beyond the slip threshold, those lagging back towards their rest position
+// first (rigid_fit.hpp: a ring starting to slip would otherwise drag the fit
+// until the sticking core looks like the outlier), and robust (Cauchy scale).
+// What the kept set can fix:
+//   smaller principal x-y extent >= min_spread        -> a general rotation;
+//   else larger extent >= min_spread (a line)         -> a rotation about S.z;
+//   else                                               -> a translation only.
+// A fitted rotation smaller than rotation_significance times its noise
+// sqrt(2) sigma / (extent sqrt(n)) is not applied (a real rotation keeps
+// growing against the anchors until it is significant; noise does not).
+#pragma once
+
+#include <vector>
+
+#include "contact/contact_field.hpp"
+#include "contact/stick_slip_classifier.hpp"
+#include "core/marker_field.hpp"
+#include "pose/adaptive_pose_options.hpp"
+#include "pose/rigid_fit.hpp"
+
+namespace onetip::pose {
+
+struct AnchoredFit {
+  RigidFit fit;
+  bool rotation_supported = false;  // the kept set fixes a general rotation
+};
+
+// `ids` (stick markers) becomes the kept set.
+AnchoredFit fitAnchored(const contact::StickSlipClassifier& classifier, const contact::ContactField& field,
+                        std::vector<int>& ids, const MarkerField& now, const Eigen::Isometry3d& pose,
+                        const EstimatorThresholds& thresholds, double rotation_significance);
+
+// Least-squares motion of the valid `members` between two marker fields
+// (robust with `robust_mm` > 0; translation only when asked).
+RigidFit fitConsecutive(const std::vector<int>& members, const MarkerField& before, const MarkerField& now,
+                        double robust_mm, bool translation_only = false);
+
+}  // namespace onetip::pose

@@ -1,0 +1,32 @@
+// pose/model_selection.hpp — which of the paper's three motion models a frame
+// gets, from what the contact shows (paper Sec. III-D, Eq. 16).
+//
+// adaptive policy, in order:
+//   no usable stick fit, or Eq. 16 fails
+//     (3 n_stick + n_slip < 6 or n_stick = 0)          -> centroid (footprint) model;
+//   no slipping marker, or a stick set that cannot
+//     fix a general rotation                           -> Kabsch (Eq. 1; what the set fixes);
+//   otherwise (partial slip)                           -> Ceres stick/slip least squares (Eq. 13-15).
+// stick_slip_only runs Ceres at full stick too (same fall-backs); kabsch_only
+// and centroid_only give their model always.
+#pragma once
+
+#include <cstdint>
+#include <string_view>
+
+#include "pose/adaptive_pose_options.hpp"
+
+namespace onetip::pose {
+
+enum class PoseModel : std::uint8_t { none = 0, kabsch, stick_slip, centroid };
+std::string_view toString(PoseModel m) noexcept;
+
+struct ModelEvidence {
+  bool stick_fit_ok = false;
+  bool rotation_supported = false;
+  int n_stick = 0, n_slip = 0;
+};
+
+PoseModel selectModel(const ModelEvidence& evidence, ModelPolicy policy);
+
+}  // namespace onetip::pose

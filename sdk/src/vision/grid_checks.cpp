@@ -1,0 +1,53 @@
+#include "vision/grid_checks.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+namespace onetip::vision {
+
+LinkCheck checkLinks(const LatticeView& now, const LatticeView& before, int r, int c, float stretch) {
+  LinkCheck out;
+  if (!before.has(r, c)) return out;
+  constexpr int kDir[4][2] = {{0, 1}, {1, 0}, {0, -1}, {-1, 0}};  // cyclic: right, down, left, up
+  cv::Point2f link[4], old[4];
+  bool have[4] = {false, false, false, false};
+  for (int k = 0; k < 4; ++k) {
+    const int nr = r + kDir[k][0], nc = c + kDir[k][1];
+    if (!now.has(nr, nc) || !before.has(nr, nc)) continue;
+    link[k] = now.at(nr, nc) - now.at(r, c), old[k] = before.at(nr, nc) - before.at(r, c);
+    have[k] = true;
+    const float ratio = std::sqrt(link[k].dot(link[k]) / std::max(old[k].dot(old[k]), 1e-6f));
+    ++out.checked;
+    if (link[k].dot(old[k]) <= 0 || ratio > stretch || ratio * stretch < 1.0f) ++out.bad;
+  }
+  for (int k = 0; k < 4; ++k) {
+    const int j = (k + 1) % 4;
+    if (have[k] && have[j] && link[k].cross(link[j]) * old[k].cross(old[j]) <= 0) ++out.crossed;
+  }
+  return out;
+}
+
+bool hasSeam(const ViewMarkers& m, float stretch, const CornerFinder& near) {
+  const auto length2 = [&](int r, int c, int dr, int dc) {
+    if (!m.has(r, c) || !m.has(r + dr, c + dc)) return -1.0f;
+    const cv::Point2f d = m.at(r + dr, c + dc) - m.at(r, c);
+    return d.dot(d);
+  };
+  for (int r = 0; r < m.rows; ++r) {
+    for (int c = 0; c < m.cols; ++c) {
+      for (const auto& [dr, dc] : {std::pair{0, 1}, std::pair{1, 0}}) {
+        const float now = length2(r, c, dr, dc), before = length2(r - dr, c - dc, dr, dc),
+                    after = length2(r + dr, c + dc, dr, dc);
+        if (now < 0 || before < 0 || after < 0) continue;
+        if (100.0f * now < std::min(before, after)) return true;
+        if (now > stretch * stretch * std::max(before, after) &&
+            near(0.5f * (m.at(r, c) + m.at(r + dr, c + dc)), 0.25f * std::sqrt(now)))
+          return true;
+      }
+    }
+  }
+  return false;
+}
+
+}  // namespace onetip::vision

@@ -1,0 +1,187 @@
+// pose_campaign — the pose estimator on seeded random combined motions
+// (sim/random_scenario.hpp) against the simulator's ground truth, judged by
+// tests/unit/pose/campaign_score.hpp. One CSV row per run:
+//   field level: the simulator's exact marker fields with Gaussian noise of
+//     0.0003 mm per axis per grey level of image noise (the front end's error
+//     at 2 grey levels is 0.0006 mm, docs/pose/README.md);
+//   image level (the first --image-runs seeds whose run has at most
+//     --image-max-frames frames): every frame rendered and processed by the
+//     real front end (pipeline::FrameProcessor), marker RMSE against truth kept.
+// Usage: pose_campaign [--runs N] [--image-runs M] [--image-max-frames F]
+//          [--first-seed S] [--out runs.csv]
+//          [--trace SEED | --trace-scenario FILE.yaml] [--trace-out frames.csv]
+// (a trace: one run's frames, truth beside estimate, at field level with
+// 2 grey levels' noise for a scenario file)
+// ms_per_frame: median wall time of contact analysis + pose per contact frame
+// (field level; a campaign figure, the benchmark is bench_pose).
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+#include "campaign_score.hpp"
+#include "core/csv_table.hpp"
+#include "rendered_replay.hpp"
+#include "sim/random_scenario.hpp"
+#include "sim/simulator.hpp"
+
+using namespace onetip;
+using namespace onetip::poseval;
+
+namespace {
+
+constexpr double kFieldNoisePerGreyMm = 0.0003;
+
+struct Args {
+  int runs = 300, image_runs = 0, image_max_frames = 400;
+  unsigned first_seed = 1;
+  std::string out = "docs/pose/data/campaign.csv";
+  long trace = -1;
+  std::string trace_scenario;
+  std::string trace_out = "docs/pose/data/campaign_trace.csv";
+};
+
+Args parse(int argc, char** argv) {
+  Args a;
+  for (int i = 1; i + 1 < argc; i += 2) {
+    const std::string k = argv[i], v = argv[i + 1];
+    if (k == "--runs") a.runs = std::stoi(v);
+    else if (k == "--image-runs") a.image_runs = std::stoi(v);
+    else if (k == "--image-max-frames") a.image_max_frames = std::stoi(v);
+    else if (k == "--first-seed") a.first_seed = static_cast<unsigned>(std::stoul(v));
+    else if (k == "--out") a.out = v;
+    else if (k == "--trace") a.trace = std::stol(v);
+    else if (k == "--trace-scenario") a.trace_scenario = v;
+    else if (k == "--trace-out") a.trace_out = v;
+    else {
+      std::fprintf(stderr, "pose_campaign: unknown option %s\n", k.c_str());
+      std::exit(2);
+    }
+  }
+  return a;
+}
+
+std::string num(double v) { return formatNumber(v, 5); }
+
+std::vector<std::string> header() {
+  std::vector<std::string> h = {"level", "seed", "model", "friction", "kinetic_ratio", "thickness_mm",
+                                "foundation_length_mm", "marker_depth_mm", "markers", "indenter", "noise_grey",
+                                "noise_mm", "blur_px", "fps", "episodes", "two_fingers", "peak_speed_mm_s",
+                                "peak_rate_deg_s", "frames", "contact_frames", "working_frames", "linear_frames",
+                                "contact_missed"};
+  for (const char* axis : {"dx", "dy", "dz", "yaw", "pitch", "roll"}) h.push_back(std::string("rmse_") + axis);
+  for (const char* axis : {"dx", "dy", "dz", "yaw", "pitch", "roll"}) h.push_back(std::string("max_") + axis);
+  for (const char* c : {"longest_excess", "first_excess_frame", "excess_axis", "excess_truth_state", "excess_model",
+                        "diverged", "ms_per_frame", "marker_rmse_mm"})
+    h.push_back(c);
+  return h;
+}
+
+std::vector<std::string> row(const char* level, const sim::RandomConditions& c, double noise_mm, const RunScore& s,
+                             double ms, double marker_rmse) {
+  std::vector<std::string> r = {level, std::to_string(c.seed), std::string(sim::toString(c.model)), num(c.friction),
+                                num(c.kinetic_ratio), num(c.thickness_mm), num(c.foundation_length_mm),
+                                num(c.marker_depth_mm), std::to_string(c.markers), c.indenter, num(c.noise_grey),
+                                num(noise_mm), num(c.blur_px), num(c.fps), std::to_string(c.episodes),
+                                c.two_fingers ? "1" : "0", num(c.peak_speed_mm_s), num(c.peak_rate_deg_s),
+                                std::to_string(s.frames), std::to_string(s.contact_frames),
+                                std::to_string(s.working_frames), std::to_string(s.linear_frames),
+                                std::to_string(s.contact_missed)};
+  for (double v : s.linear_rmse) r.push_back(num(v));
+  for (double v : s.max_error) r.push_back(num(v));
+  r.push_back(std::to_string(s.longest_excess));
+  r.push_back(std::to_string(s.first_excess_frame));
+  r.push_back(std::to_string(s.excess_axis));
+  r.push_back(std::string(toString(s.excess_truth_state)));
+  r.push_back(std::string(pose::toString(s.excess_model)));
+  r.push_back(s.diverged ? "1" : "0");
+  r.push_back(num(ms));
+  r.push_back(num(marker_rmse));
+  return r;
+}
+
+// Field level: the tracker over the noisy marker fields, timed per frame.
+std::vector<ReplayFrame> runField(const Recording& rec, double& median_ms) {
+  input::PoseTracker tracker;
+  std::vector<ReplayFrame> frames;
+  std::vector<double> ms;
+  for (size_t k = 0; k < rec.frames.size(); ++k) {
+    const auto t0 = std::chrono::steady_clock::now();
+    const input::TrackerResult r = tracker.update(rec.frames[k], rec.rest, rec.truth[k].t);
+    const auto t1 = std::chrono::steady_clock::now();
+    if (r.contact) ms.push_back(std::chrono::duration<double, std::milli>(t1 - t0).count());
+    frames.push_back(replayFrame(rec.truth[k], r, rec.frames[k].size()));
+  }
+  median_ms = 0;
+  if (!ms.empty()) {
+    std::nth_element(ms.begin(), ms.begin() + static_cast<long>(ms.size() / 2), ms.end());
+    median_ms = ms[ms.size() / 2];
+  }
+  return frames;
+}
+
+void writeTrace(const std::vector<ReplayFrame>& frames, const std::string& path) {
+  std::vector<std::string> h = {"frame", "t", "gt_contact", "gt_state", "contact", "state", "model",
+                                "region_markers", "n_stick", "n_slip"};
+  for (const char* axis : {"dx", "dy", "dz", "yaw", "pitch", "roll"}) h.push_back(std::string("gt_") + axis);
+  for (const char* axis : {"dx", "dy", "dz", "yaw", "pitch", "roll"}) h.push_back(axis);
+  CsvWriter out(path, h);
+  for (size_t k = 0; k < frames.size(); ++k) {
+    const ReplayFrame& f = frames[k];
+    std::vector<std::string> r = {std::to_string(k), num(f.t), f.gt_contact ? "1" : "0",
+                                  std::string(toString(f.gt_state)), f.contact ? "1" : "0",
+                                  std::string(toString(f.state)), std::string(pose::toString(f.model)),
+                                  std::to_string(f.region_markers), std::to_string(f.n_stick),
+                                  std::to_string(f.n_slip)};
+    for (double v : f.gt.asArray()) r.push_back(num(v));
+    for (double v : f.raw.asArray()) r.push_back(num(v));
+    out.row(r);
+  }
+  out.commit();
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const Args args = parse(argc, argv);
+  if (args.trace >= 0 || !args.trace_scenario.empty()) {
+    sim::RandomScenario rs;
+    if (args.trace >= 0) rs = sim::randomScenario(static_cast<unsigned>(args.trace));
+    else rs.scenario = sim::loadScenario(args.trace_scenario);
+    ReplayOptions o;
+    o.noise_mm = kFieldNoisePerGreyMm * rs.conditions.noise_grey;
+    double ms = 0;
+    const auto frames = runField(record(rs.scenario, o), ms);
+    writeTrace(frames, args.trace_out);
+    const RunScore s = scoreRun(frames);
+    std::printf("%s: diverged %d (longest %d from frame %d)\n", rs.scenario.name.c_str(), s.diverged,
+                s.longest_excess, s.first_excess_frame);
+    return 0;
+  }
+  CsvWriter out(args.out, header());
+  int diverged = 0, image_done = 0;
+  for (int i = 0; i < args.runs; ++i) {
+    const unsigned seed = args.first_seed + static_cast<unsigned>(i);
+    const sim::RandomScenario rs = sim::randomScenario(seed);
+    ReplayOptions o;
+    o.noise_mm = kFieldNoisePerGreyMm * rs.conditions.noise_grey;
+    o.seed = seed;
+    double ms = 0;
+    const RunScore s = scoreRun(runField(record(rs.scenario, o), ms));
+    diverged += s.diverged ? 1 : 0;
+    out.row(row("field", rs.conditions, o.noise_mm, s, ms, 0));
+    if (image_done < args.image_runs && rs.scenario.defaultFrameCount() <= args.image_max_frames) {
+      const RenderedReplay rr = replayRendered(rs.scenario);
+      const double marker_rmse = std::sqrt((rr.marker_rmse_mm[0] * rr.marker_rmse_mm[0] +
+                                            rr.marker_rmse_mm[1] * rr.marker_rmse_mm[1] +
+                                            rr.marker_rmse_mm[2] * rr.marker_rmse_mm[2]) / 3.0);
+      out.row(row("image", rs.conditions, marker_rmse, scoreRun(rr.frames), 0, marker_rmse));
+      ++image_done;
+    }
+    std::fprintf(stderr, "\rrun %d/%d, diverged %d, image runs %d", i + 1, args.runs, diverged, image_done);
+  }
+  std::fprintf(stderr, "\n");
+  out.commit();
+  return 0;
+}

@@ -1,0 +1,35 @@
+#!/usr/bin/env bash
+# Runs every libFuzzer harness of tests/fuzz for SECONDS each (default 20) from
+# its committed seeds (tests/fuzz/corpus/<harness>, plus tests/hostile/corpus
+# for frames); new inputs go to BUILD/fuzz-work/<harness>/corpus, findings to
+# BUILD/fuzz-work/<harness>/crash-*. Prints executions and coverage per harness
+# and exits non-zero when any harness finds a crash, a leak or a time-out.
+#   tests/fuzz/run_fuzzers.sh BUILD_DIR [SECONDS]
+set -uo pipefail
+build=${1:?usage: run_fuzzers.sh BUILD_DIR [SECONDS]}
+seconds=${2:-20}
+src="$(cd "$(dirname "$0")/../.." && pwd)"
+harnesses=(fuzz_frame fuzz_calibration fuzz_pattern fuzz_scenario fuzz_dataset_csv
+           fuzz_dataset_binary fuzz_queries fuzz_spnav_protocol)
+failed=0
+printf "%-22s %8s %12s %10s %8s  %s\n" harness seconds executions exec/s cov result
+for h in "${harnesses[@]}"; do
+  work="$build/fuzz-work/$h"
+  mkdir -p "$work/corpus"
+  seeds=("$src/tests/fuzz/corpus/$h")
+  [ "$h" = fuzz_frame ] && seeds+=("$src/tests/hostile/corpus")
+  log="$work/log.txt"
+  "$build/tests/fuzz/$h" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len=65536 \
+    -print_final_stats=1 -artifact_prefix="$work/" "$work/corpus" "${seeds[@]}" >"$log" 2>&1
+  status=$?
+  execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
+  rate=$(sed -n 's/^stat::average_exec_per_sec: *//p' "$log" | tail -1)
+  cov=$(grep -o 'cov: [0-9]*' "$log" | tail -1 | cut -d' ' -f2)
+  result=ok
+  if [ $status -ne 0 ]; then
+    result="FAILED (exit $status): $(grep -m1 -E 'ERROR|SUMMARY|deadly signal' "$log")"
+    failed=1
+  fi
+  printf "%-22s %8s %12s %10s %8s  %s\n" "$h" "$seconds" "${execs:-?}" "${rate:-?}" "${cov:-?}" "$result"
+done
+exit $failed

@@ -1,0 +1,65 @@
+#include "campaign_score.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace onetip::poseval {
+
+bool inWorkingRange(const Input6& g) {
+  return std::abs(g.dx) <= 4 && std::abs(g.dy) <= 4 && g.dz >= -0.05 && g.dz <= 3.5 && std::abs(g.yaw) <= 15 &&
+         std::abs(g.pitch) <= 40 && std::abs(g.roll) <= 40;
+}
+
+bool inLinearRange(const Input6& g) { return inWorkingRange(g) && std::abs(g.dx) <= 1.5 && std::abs(g.dy) <= 1.5; }
+
+RunScore scoreRun(const std::vector<ReplayFrame>& frames) {
+  RunScore s;
+  s.frames = static_cast<int>(frames.size());
+  std::array<double, 6> squares{};
+  int stretch = 0, stretch_axis = -1;
+  ContactState stretch_state = ContactState::none;
+  pose::PoseModel stretch_model = pose::PoseModel::none;
+  for (size_t k = 0; k < frames.size(); ++k) {
+    const ReplayFrame& f = frames[k];
+    if (!f.gt_contact) {
+      stretch = 0;
+      continue;
+    }
+    ++s.contact_frames;
+    s.contact_missed += f.contact ? 0 : 1;
+    if (!inWorkingRange(f.gt)) {
+      stretch = 0;
+      continue;
+    }
+    ++s.working_frames;
+    const std::array<double, 6> est = f.contact ? f.raw.asArray() : std::array<double, 6>{};
+    const std::array<double, 6> gt = f.gt.asArray();
+    int axis = -1;
+    const bool linear = inLinearRange(f.gt);
+    s.linear_frames += linear ? 1 : 0;
+    for (size_t a = 0; a < 6; ++a) {
+      const double e = std::abs(est[a] - gt[a]);
+      s.max_error[a] = std::max(s.max_error[a], e);
+      if (axis < 0 && e > (a < 3 ? kDivergenceMm : kDivergenceDeg)) axis = static_cast<int>(a);
+      if (linear) squares[a] += e * e;
+    }
+    stretch = axis >= 0 ? stretch + 1 : 0;
+    if (stretch == 1) {
+      stretch_axis = axis;
+      stretch_state = f.gt_state;
+      stretch_model = f.model;
+    }
+    if (stretch > s.longest_excess) {
+      s.longest_excess = stretch;
+      s.first_excess_frame = static_cast<int>(k) - stretch + 1;
+      s.excess_axis = stretch_axis;
+      s.excess_truth_state = stretch_state;
+      s.excess_model = stretch_model;
+    }
+  }
+  for (size_t a = 0; a < 6; ++a) s.linear_rmse[a] = s.linear_frames ? std::sqrt(squares[a] / s.linear_frames) : 0.0;
+  s.diverged = s.longest_excess > kDivergenceFrames;
+  return s;
+}
+
+}  // namespace onetip::poseval

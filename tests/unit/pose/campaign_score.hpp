@@ -1,0 +1,46 @@
+// tests/unit/pose/campaign_score.hpp — how one campaign run is judged against
+// the simulator's ground truth (issue 15's acceptance rules).
+//
+// Frames judged: those where the ground truth is in contact (indenter 0's
+// pose since onset). Where the estimate is not in contact its 6-D value counts
+// as zero. Per axis the error is estimate - truth (mm for dx, dy, dz; deg for
+// yaw, pitch, roll).
+//   working range: |dx|, |dy| <= 4 mm, -0.05 <= dz <= 3.5 mm, |yaw| <= 15 deg,
+//     |pitch|, |roll| <= 40 deg (of the truth);
+//   linear range: the working range with |dx|, |dy| <= 1.5 mm;
+//   divergence: some axis's error beyond 1 mm or 5 deg in more than
+//     kDivergenceFrames consecutive working-range frames of one contact.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "sim_replay.hpp"
+
+namespace onetip::poseval {
+
+constexpr int kDivergenceFrames = 3;
+constexpr double kDivergenceMm = 1.0, kDivergenceDeg = 5.0;
+
+bool inWorkingRange(const Input6& truth);
+bool inLinearRange(const Input6& truth);
+
+struct RunScore {
+  int frames = 0;            // all frames of the run
+  int contact_frames = 0;    // ground truth in contact
+  int working_frames = 0;    // ... and in the working range
+  int linear_frames = 0;     // ... and in the linear range
+  int contact_missed = 0;    // truth in contact, estimate not
+  std::array<double, 6> linear_rmse{};  // per axis over the linear-range frames
+  std::array<double, 6> max_error{};    // per axis over the working-range frames
+  int longest_excess = 0;    // consecutive working-range frames with an axis beyond 1 mm / 5 deg
+  int first_excess_frame = -1;  // index of the first frame of the longest such stretch
+  bool diverged = false;     // longest_excess > kDivergenceFrames
+  int excess_axis = -1;      // the axis (0..5: dx .. roll) beyond its limit first in that stretch
+  ContactState excess_truth_state = ContactState::none;   // the truth's contact state there
+  pose::PoseModel excess_model = pose::PoseModel::none;   // the estimate's model there
+};
+
+RunScore scoreRun(const std::vector<ReplayFrame>& frames);
+
+}  // namespace onetip::poseval

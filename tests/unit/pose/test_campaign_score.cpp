@@ -1,0 +1,61 @@
+// The campaign's judge (campaign_score.hpp) on synthetic frames whose errors
+// are known: divergence needs more than three consecutive frames beyond
+// 1 mm / 5 deg inside the working range; the linear range bounds the RMSE.
+#include <gtest/gtest.h>
+
+#include "campaign_score.hpp"
+
+using namespace onetip;
+using namespace onetip::poseval;
+
+namespace {
+
+ReplayFrame frame(double gt_dx, double est_dx, double gt_pitch = 0, double est_pitch = 0) {
+  ReplayFrame f;
+  f.gt_contact = f.contact = true;
+  f.gt.dx = gt_dx;
+  f.raw.dx = est_dx;
+  f.gt.pitch = gt_pitch;
+  f.raw.pitch = est_pitch;
+  return f;
+}
+
+}  // namespace
+
+TEST(CampaignScore, DivergenceNeedsMoreThanThreeConsecutiveFrames) {
+  std::vector<ReplayFrame> frames(10, frame(0.5, 0.5));
+  for (int k = 2; k < 5; ++k) frames[static_cast<size_t>(k)] = frame(0.5, 1.6);  // 3 frames 1.1 mm off
+  RunScore s = scoreRun(frames);
+  EXPECT_EQ(s.longest_excess, 3);
+  EXPECT_FALSE(s.diverged);
+  frames[5] = frame(0.5, 1.6);  // now 4
+  s = scoreRun(frames);
+  EXPECT_EQ(s.longest_excess, 4);
+  EXPECT_EQ(s.first_excess_frame, 2);
+  EXPECT_EQ(s.excess_axis, 0);
+  EXPECT_TRUE(s.diverged);
+}
+
+TEST(CampaignScore, OnlyTheWorkingRangeCountsAndAMissedContactIsAnError) {
+  std::vector<ReplayFrame> frames(8, frame(0.0, 0.0, 45, 30));  // pitch 45: beyond the range
+  EXPECT_FALSE(scoreRun(frames).diverged);
+  EXPECT_EQ(scoreRun(frames).working_frames, 0);
+  for (auto& f : frames) {
+    f = frame(0.0, 0.0, 20, 0);
+    f.contact = false;  // the estimate lost the contact: its output counts as zero
+  }
+  const RunScore s = scoreRun(frames);
+  EXPECT_EQ(s.contact_missed, 8);
+  EXPECT_TRUE(s.diverged);
+  EXPECT_EQ(s.excess_axis, 4);
+  EXPECT_NEAR(s.linear_rmse[4], 20.0, 1e-12);
+}
+
+TEST(CampaignScore, TheLinearRangeStopsAtOnePointFiveMillimetres) {
+  std::vector<ReplayFrame> frames = {frame(1.0, 1.1), frame(2.0, 2.5)};
+  const RunScore s = scoreRun(frames);
+  EXPECT_EQ(s.working_frames, 2);
+  EXPECT_EQ(s.linear_frames, 1);
+  EXPECT_NEAR(s.linear_rmse[0], 0.1, 1e-12);
+  EXPECT_NEAR(s.max_error[0], 0.5, 1e-12);
+}
