@@ -42,9 +42,13 @@ void AdaptivePoseOptions::validate() const {
 
 EstimatorThresholds deriveThresholds(const AdaptivePoseOptions& o, const SensorSelf& self) {
   EstimatorThresholds t;
-  // A front end never localises a corner better than ~1e-4 of the pitch: a
-  // noise-free simulation must not give zero thresholds.
-  t.noise_mm = std::max(self.noise_mm, 1e-4 * self.pitch_mm);
+  // The noise measured at rest is the frame-to-frame jitter only; under
+  // deformation the front end's error also holds a bias that changes with the
+  // local shear and perspective (0.0006 mm per axis at default image quality,
+  // docs/pose/README.md, against 0.0002-0.0004 mm of jitter at rest). So the
+  // measurement can raise the thresholds above the prior, never lower them;
+  // and a front end never localises a corner better than ~1e-4 of the pitch.
+  t.noise_mm = std::max({self.noise_mm, o.self.prior_noise_mm, 1e-4 * self.pitch_mm});
   t.slip_mm = o.slip_sigmas * t.noise_mm;
   t.robust_mm = o.robust_sigmas * t.noise_mm;
   t.min_spread_mm = o.min_rotation_spread_pitches * self.pitch_mm;

@@ -5,6 +5,9 @@
 // at one operating point: each is a multiple of sigma or p, a time in
 // seconds, a physical speed, an angle or a ratio.
 //
+// sigma = max(noise measured at rest, the prior noise of the front end under
+// deformation, 1e-4 p): the jitter at rest misses the deformation-dependent
+// part of the front end's error, so a measurement only ever raises it.
 //   slip threshold   = slip_sigmas * sigma              (drift of an anchored marker, mm)
 //   robust scale     = robust_sigmas * sigma            (Cauchy scale of the stick fit, mm)
 //   min spread       = min_rotation_spread_pitches * p  (smaller stick sets: no general rotation)

@@ -100,8 +100,8 @@ TEST(EstimatorThresholds, ScaleWithNoisePitchAndFrameInterval) {
   EXPECT_EQ(u.stick_hold_frames, 80);  // the same 0.33 s
   EXPECT_EQ(u.window_frames, 38);      // the same 0.16 s
   EXPECT_NEAR(u.max_step_mm, t.max_step_mm / 8, 1e-12);
-  other.noise_mm = 0;  // a noise-free simulation: a floor, never a zero threshold
-  EXPECT_GT(deriveThresholds(o, other).slip_mm, 0);
+  other.noise_mm = 0.0001;  // quieter than the prior at rest: the prior holds
+  EXPECT_NEAR(deriveThresholds(o, other).slip_mm, t.slip_mm, 1e-12);
 }
 
 TEST(EstimatorThresholds, OptionsOutsideTheirRangesAreRefusedByName) {
