@@ -28,6 +28,7 @@ void AdaptivePoseOptions::validate() const {
   requireIn(rotation_significance, 0, 100, "rotation_significance", "");
   requireIn(min_rotation_spread_pitches, 0.05, 5, "min_rotation_spread_pitches", "");
   requireIn(stick_hold_s, 0.001, 10, "stick_hold_s", " s");
+  requireIn(stick_hold_min_frames, 1, 1000, "stick_hold_min_frames", "");
   requireIn(min_macro_markers, 1, 10000, "min_macro_markers", "");
   requireIn(macro_window_s, 0.01, 2, "macro_window_s", " s");
   requireIn(macro_drift_pitches, 0.001, 2, "macro_drift_pitches", "");
@@ -55,7 +56,7 @@ EstimatorThresholds deriveThresholds(const AdaptivePoseOptions& o, const SensorS
   t.macro_drift_mm = o.macro_drift_pitches * self.pitch_mm;
   t.macro_exit_lag_mm = o.macro_exit_lag_pitches * self.pitch_mm;
   const double dt = self.frame_s;
-  t.stick_hold_frames = std::max(1, static_cast<int>(std::ceil(o.stick_hold_s / dt - 1e-9)));
+  t.stick_hold_frames = std::max(o.stick_hold_min_frames, static_cast<int>(std::ceil(o.stick_hold_s / dt - 1e-9)));
   t.window_frames = std::max(2, static_cast<int>(std::lround(o.macro_window_s / dt)));
   t.max_step_mm = o.max_speed_mm_s * dt;
   t.max_step_rad = o.max_rate_deg_s * dt * kRadPerDeg;

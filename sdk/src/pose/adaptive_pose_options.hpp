@@ -11,7 +11,9 @@
 //   slip threshold   = slip_sigmas * sigma              (drift of an anchored marker, mm)
 //   robust scale     = robust_sigmas * sigma            (Cauchy scale of the stick fit, mm)
 //   min spread       = min_rotation_spread_pitches * p  (smaller stick sets: no general rotation)
-//   stick hold       = ceil(stick_hold_s / dt) frames   (quiet frames before a marker sticks again)
+//   stick hold       = max(stick_hold_min_frames, ceil(stick_hold_s / dt)) frames (quiet frames before
+//                      a marker sticks again: both a time and a count of quiet measurements; at 15 fps
+//                      5 frames of evidence let the twist's slipping ring stick again too early)
 //   window           = max(2, round(macro_window_s / dt)) frames (footprint tests)
 //   drift floor      = macro_drift_pitches * p          (footprint drift that can mean a slide, mm)
 //   exit lag         = macro_exit_lag_pitches * p       (footprint lag that ends macroscopic slip, mm)
@@ -45,6 +47,7 @@ struct AdaptivePoseOptions {
   double rotation_significance = 1.0;         // [0, 100] noise sigmas a rotation must reach to be applied
   double min_rotation_spread_pitches = 0.5;   // [0.05, 5]
   double stick_hold_s = 0.33;                 // [0.001, 10] s
+  int stick_hold_min_frames = 10;             // [1, 1000] quiet measurements, whatever the frame rate
   int min_macro_markers = 15;                 // [1, 10000] smaller regions never declare macroscopic slip
   double macro_window_s = 0.16;               // [0.01, 2] s
   double macro_drift_pitches = 0.067;         // [0.001, 2]
