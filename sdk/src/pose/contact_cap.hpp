@@ -15,10 +15,6 @@
 //    point moved by  rho = H^-1 (w_y, -w_x)  over the pad (for a sphere of
 //    radius R: R w across the tilt axis). That is how far the footprint moves
 //    over the finger when the finger rolls or pitches without slipping.
-//  * orientation: the principal axis angle of the footprint's second moment
-//    M = sum w_i (x_i - c)(x_i - c)^T, w_i = max(0, n_i - cut), with the
-//    anisotropy l1 / l2 >= 1 of M's eigenvalues; for an elongated footprint
-//    the angle turns with the finger's yaw even when every marker slips.
 #pragma once
 
 #include <Eigen/Core>
@@ -32,11 +28,6 @@ struct ContactCap {
   bool valid = false;
   Eigen::Vector3d centre{0, 0, 0};          // footprint centre (S, mm)
   Eigen::Matrix2d curvature = Eigen::Matrix2d::Zero();  // H (1/mm)
-  double axis_rad = 0;                      // footprint principal axis angle, about S.z
-  double anisotropy = 1;                    // >= 1
-  double minor_extent_mm = 0;               // sqrt of M's smaller eigenvalue
-  int markers = 0;                          // markers fitted
-  bool full = false;                        // H fitted in full (>= 6 markers), not isotropic
 };
 
 ContactCap fitContactCap(const std::vector<Eigen::Vector3d>& positions, const std::vector<double>& normal_deformation,
