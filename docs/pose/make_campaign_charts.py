@@ -7,6 +7,8 @@ session 5, same seeds, same simulator). Outputs:
   campaign_conditions.png   worst linear-range RMSE per run against each condition
   campaign_envelope.png     share of diverged runs per condition bin
   campaign_accuracy_time.png accuracy against time per frame, per contact model
+  campaign_stick_truth.png  the stick labels against the simulator's per-marker truth, and what the
+                            truth offered where each divergence began (this estimator's file only)
   data/campaign_summary.csv the figures the README quotes
 Run: /usr/bin/python3 docs/pose/make_campaign_charts.py [data_dir] [out_dir]
 """
@@ -24,7 +26,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 HERE = os.path.dirname(os.path.abspath(__file__))
 AXES = ["dx", "dy", "dz", "yaw", "pitch", "roll"]
 ESTIMATORS = [("campaign_baseline.csv", "session 5 (tuned thresholds)", "tab:gray"),
-              ("campaign.csv", "session 6 (derived thresholds, rolling-aware)", "tab:blue")]
+              ("campaign.csv", "sessions 6-7 (derived thresholds, rolling-aware)", "tab:blue")]
 
 
 def rows(path):
@@ -142,6 +144,51 @@ def accuracy_time_chart(data, out_dir):
     plt.close(fig)
 
 
+def stick_truth_chart(data, out_dir):
+    rs = [r for (file, _, _), rows_ in data if file == "campaign.csv" for r in rows_
+          if r["level"] == "field" and "stick_precision" in r]
+    if not rs:
+        return
+    fig, (a1, a2) = plt.subplots(1, 2, figsize=(11, 4.5))
+    models = ("halfspace", "foundation")
+    for i, model in enumerate(models):
+        g = [r for r in rs if r["model"] == model and int(r["contact_frames"]) > 0]
+        for offset, key, colour in ((-0.2, "stick_precision", "tab:blue"), (0.2, "stick_recall", "tab:orange")):
+            v = [float(r[key]) for r in g]
+            a1.boxplot(v, positions=[i + offset], widths=0.3, patch_artist=True,
+                       boxprops={"facecolor": colour, "alpha": 0.6}, medianprops={"color": "black"})
+    a1.set_xticks(range(len(models)))
+    a1.set_xticklabels(models)
+    a1.set_xlim(-0.6, len(models) - 0.4)
+    a1.set_ylim(0, 1.02)
+    a1.set_ylabel("per run")
+    a1.legend(handles=[plt.Rectangle((0, 0), 1, 1, color="tab:blue", alpha=0.6),
+                       plt.Rectangle((0, 0), 1, 1, color="tab:orange", alpha=0.6)],
+              labels=["precision: labelled stick that truly touch and stick",
+                      "recall: truly touching and sticking labelled stick"], fontsize=8, loc="lower center")
+    a1.set_title("Stick labels against the simulator's truth", fontsize=10)
+    bins = [("0", lambda n: n == 0), ("1-2", lambda n: 1 <= n <= 2), (">= 3", lambda n: n >= 3)]
+    states = [("stick", "tab:green"), ("partial_slip", "tab:olive"), ("slip", "tab:red")]
+    diverged = [r for r in rs if r["diverged"] == "1"]
+    bottom = [0] * len(bins)
+    for state, colour in states:
+        h = [sum(1 for r in diverged if r["excess_truth_state"] == state and test(int(r["excess_true_stick"])))
+             for _, test in bins]
+        a2.bar(range(len(bins)), h, bottom=bottom, color=colour, label="truth " + state)
+        bottom = [b + x for b, x in zip(bottom, h)]
+    a2.set_ylim(0, 1.12 * max(max(bottom), 1))
+    a2.set_xticks(range(len(bins)))
+    a2.set_xticklabels([b for b, _ in bins])
+    a2.set_xlabel("markers truly touching and sticking where the divergence began")
+    a2.set_ylabel("diverged runs")
+    a2.legend(fontsize=8)
+    a2.set_title("What the truth offered: fewer than 3 cannot fix a rotation", fontsize=10)
+    fig.suptitle("Field level, this estimator (%d runs, %d diverged)" % (len(rs), len(diverged)))
+    fig.tight_layout()
+    fig.savefig(os.path.join(out_dir, "campaign_stick_truth.png"), dpi=80)
+    plt.close(fig)
+
+
 def main():
     data_dir = sys.argv[1] if len(sys.argv) > 1 else os.path.join(HERE, "data")
     out_dir = sys.argv[2] if len(sys.argv) > 2 else HERE
@@ -156,6 +203,7 @@ def main():
     conditions_chart(data, out_dir)
     envelope_chart(data, out_dir)
     accuracy_time_chart(data, out_dir)
+    stick_truth_chart(data, out_dir)
     fields = list(table[0].keys())
     with open(os.path.join(data_dir, "campaign_summary.csv"), "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=fields)

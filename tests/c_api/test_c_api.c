@@ -7,18 +7,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "c_check.h"
 #include "onetip_c.h"
-
-static int failures = 0;
-#define CHECK(cond, ...)                                   \
-  do {                                                     \
-    if (!(cond)) {                                         \
-      fprintf(stderr, "FAILED %s:%d: %s: ", __FILE__, __LINE__, #cond); \
-      fprintf(stderr, __VA_ARGS__);                        \
-      fprintf(stderr, "\n");                               \
-      ++failures;                                          \
-    }                                                      \
-  } while (0)
 
 /* --- events received by the callback ----------------------------------- */
 #define MAX_EVENTS 4096

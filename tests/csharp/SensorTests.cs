@@ -1,7 +1,8 @@
 // The C# wrapper against the real libonetip (label csharp): the simulated
 // press end to end, compared frame by frame with `onetip process` (the C++
-// pipeline) on the same scenario, and bad input at the boundary.
-// Usage: mono OnetipTests.exe SCENARIO.yaml POSE.csv MARKERS.csv WORK_DIR
+// pipeline) on the same scenario, bad input at the boundary, and the option
+// table (OptionsTests.cs).
+// Usage: mono OnetipTests.exe SCENARIO.yaml POSE.csv MARKERS.csv WORK_DIR, or OnetipTests.exe options
 using System;
 using System.Collections.Generic;
 using System.IO;
@@ -17,8 +18,13 @@ namespace Onetip.Tests
 
         static int Main(string[] args)
         {
+            if (args.Length == 1 && args[0] == "options") {  // the option table alone (label options)
+                OptionsTests.Run();
+                Console.WriteLine(Check.Failures == 0 ? "all option checks passed" : Check.Failures + " checks failed");
+                return Check.Failures == 0 ? 0 : 1;
+            }
             if (args.Length != 4) {
-                Console.Error.WriteLine("usage: OnetipTests.exe SCENARIO.yaml POSE.csv MARKERS.csv WORK_DIR");
+                Console.Error.WriteLine("usage: OnetipTests.exe SCENARIO.yaml POSE.csv MARKERS.csv WORK_DIR | options");
                 return 2;
             }
             Console.WriteLine("onetip " + Sensor.LibraryVersion + ", C ABI " + Sensor.LibraryAbiVersion);
@@ -28,6 +34,7 @@ namespace Onetip.Tests
             BadInput(args[3]);
             CallbacksThatThrow(args[3]);
             UnityAxesTests.Run();
+            OptionsTests.Run();
             Console.WriteLine(Check.Failures == 0 ? "all checks passed" : Check.Failures + " checks failed");
             return Check.Failures == 0 ? 0 : 1;
         }

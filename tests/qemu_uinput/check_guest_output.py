@@ -10,7 +10,11 @@ BTN_TRIGGER; only changed axes are reported, then SYN_REPORT.
 Exit 0 when everything matches, 1 otherwise (each mismatch is printed).
 """
 import math
+import os
 import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "qemu"))
+from guest_console import console_lines  # noqa: E402
 
 EV_SYN, EV_KEY, EV_ABS = 0, 1, 3
 BTN_TRIGGER = 0x120
@@ -63,13 +67,7 @@ def expected_stream(publishes):
 
 
 def main(path):
-    lines = []
-    with open(path, errors="replace") as f:
-        for raw in f:
-            raw = raw.replace("\r", "").rstrip("\n")
-            at = raw.find("ONETIP ")  # the console may put escape codes first
-            if at >= 0:
-                lines.append(raw[at + len("ONETIP "):])
+    lines = console_lines(path)
     failures = []
 
     def check(ok, what):

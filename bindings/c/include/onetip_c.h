@@ -11,10 +11,13 @@
  *  - Every function that can fail returns an onetip_error_kind (ONETIP_OK = 0)
  *    and, when `error` is not NULL, fills it with the same kind and a one-line
  *    message ("" on success). No C++ exception ever leaves the library.
- *  - Version handshake: the entry points (onetip_sensor_create and the
- *    onetip_options_* functions) take the ABI version the caller was compiled
- *    against; pass ONETIP_C_ABI_VERSION. A different version fails with
- *    ONETIP_ERROR_VERSION and a message giving both versions.
+ *  - Version handshake: the entry points (onetip_sensor_create, the
+ *    onetip_options_* functions and onetip_option_describe) take the ABI
+ *    version the caller was compiled against; pass ONETIP_C_ABI_VERSION. A
+ *    different version fails with ONETIP_ERROR_VERSION and a message giving
+ *    both versions. Additions that keep the ABI compatible raise
+ *    ONETIP_C_ABI_MINOR_VERSION instead: a caller that uses functions of minor
+ *    version m needs onetip_abi_minor_version() >= m.
  *  - Handles are opaque; each create has its destroy. A NULL handle gives
  *    ONETIP_ERROR_NULL_ARGUMENT, a destroyed (or foreign) one
  *    ONETIP_ERROR_INVALID_HANDLE — detected from a registry of live handles,
@@ -54,6 +57,9 @@ extern "C" {
 
 /* The ABI this header describes; bumped on any incompatible change. */
 #define ONETIP_C_ABI_VERSION 1u
+/* Compatible additions to version 1: 1 = the option table (onetip_option_count,
+ * onetip_option_describe) and keyed option access (onetip_options_get/_set/_validate). */
+#define ONETIP_C_ABI_MINOR_VERSION 1u
 
 typedef enum onetip_error_kind {
   ONETIP_OK = 0,
@@ -144,7 +150,9 @@ typedef struct onetip_marker {      /* one per marker id = row * cols + col */
   double displacement[3];           /* from rest, S, mm */
 } onetip_marker;
 
-/* Options: see onetip/sensor_options.hpp for the meaning, ranges and file format. */
+/* Options: one field per row of the option table (onetip/sensor_option_table.hpp
+ * has each one's meaning, range and unit; onetip_option_describe gives the same
+ * at run time), named as its key. */
 typedef struct onetip_options {
   int32_t queue_capacity;
   int32_t lossless;                 /* 0: latest frame wins (drops counted); 1: capture waits */
@@ -168,6 +176,30 @@ typedef struct onetip_options {
   double filter_derivative_cutoff_hz;
 } onetip_options;
 
+typedef enum onetip_option_type {
+  ONETIP_OPTION_INTEGER = 0,  /* an int32_t field */
+  ONETIP_OPTION_REAL = 1,     /* a double */
+  ONETIP_OPTION_FLAG = 2,     /* an int32_t, 0 or 1 */
+  ONETIP_OPTION_CHOICE = 3,   /* an int32_t enum: value k is the k-th name of `choices` */
+  ONETIP_OPTION_AXES = 4      /* double[6]: dx, dy, dz, yaw, pitch, roll */
+} onetip_option_type;
+
+#define ONETIP_OPTION_NAME_SIZE 48
+#define ONETIP_OPTION_UNIT_SIZE 16
+#define ONETIP_OPTION_CHOICES_SIZE 96
+#define ONETIP_OPTION_DOC_SIZE 128
+/* One row of the option table. */
+typedef struct onetip_option_info {
+  char name[ONETIP_OPTION_NAME_SIZE];  /* the key: onetip_options field, file key */
+  int32_t type;                        /* onetip_option_type */
+  int32_t count;                       /* values: 1, or 6 for ONETIP_OPTION_AXES */
+  double min, max;                     /* closed range of every value */
+  double default_value[6];             /* the first `count` are used */
+  char unit[ONETIP_OPTION_UNIT_SIZE];  /* "" when none; "mm|deg": mm for dx, dy, dz, deg for yaw, pitch, roll */
+  char choices[ONETIP_OPTION_CHOICES_SIZE];  /* CHOICE: the names in value order, separated by spaces */
+  char doc[ONETIP_OPTION_DOC_SIZE];    /* one line */
+} onetip_option_info;
+
 #define ONETIP_STAGE_NAME_SIZE 16
 #define ONETIP_MAX_STAGES 16
 typedef struct onetip_stage_timing {
@@ -190,8 +222,10 @@ typedef void (*onetip_event_callback)(const onetip_event* event, void* user);
 typedef void (*onetip_frame_callback)(const onetip_frame* frame, const onetip_marker* markers,
                                       int32_t marker_count, void* user);
 
-/* The library's ABI version (compare with ONETIP_C_ABI_VERSION) and "MAJOR.MINOR.PATCH". */
+/* The library's ABI version (compare with ONETIP_C_ABI_VERSION), its minor version
+ * (>= ONETIP_C_ABI_MINOR_VERSION for every function of this header) and "MAJOR.MINOR.PATCH". */
 ONETIP_C_API uint32_t onetip_abi_version(void);
+ONETIP_C_API uint32_t onetip_abi_minor_version(void);
 ONETIP_C_API const char* onetip_version_string(void);
 /* Seconds on the steady clock of onetip_event.arrival_s. */
 ONETIP_C_API double onetip_clock_seconds(void);
@@ -205,6 +239,22 @@ ONETIP_C_API int32_t onetip_options_load(uint32_t abi_version, const char* path,
                                          onetip_error* error);
 ONETIP_C_API int32_t onetip_options_save(uint32_t abi_version, const onetip_options* options, const char* path,
                                          onetip_error* error);
+/* Every value in its range and the relations between options hold (release_mm < press_mm);
+ * ONETIP_ERROR_INPUT naming the first bad field otherwise ("options.queue_capacity: must be in [1, 64] frames, got 0"). */
+ONETIP_C_API int32_t onetip_options_validate(uint32_t abi_version, const onetip_options* options, onetip_error* error);
+
+/* The option table (minor version 1): rows 0..onetip_option_count() - 1, in the order of the options file. */
+ONETIP_C_API int32_t onetip_option_count(void);
+ONETIP_C_API int32_t onetip_option_describe(uint32_t abi_version, int32_t row, onetip_option_info* out,
+                                            onetip_error* error);
+/* Keyed access to value `index` (0, or 0..5 for axes) of the option `name`, as a double (exact for
+ * integers, flags and choices). set checks the value against the table (range; whole numbers for
+ * integers, flags and choices) and changes nothing when it fails with ONETIP_ERROR_INPUT; so does an
+ * unknown name or index, or a struct whose lossless is not 0/1 or whose filter is not a filter kind. */
+ONETIP_C_API int32_t onetip_options_get(uint32_t abi_version, const onetip_options* options, const char* name,
+                                        int32_t index, double* out, onetip_error* error);
+ONETIP_C_API int32_t onetip_options_set(uint32_t abi_version, onetip_options* options, const char* name,
+                                        int32_t index, double value, onetip_error* error);
 
 /* Opens `source` ("v4l2:/dev/videoN", a folder, a video file or "sim:SCENARIO.yaml").
  * calibration / pattern: files (docs/reference.md); NULL or "" for "sim:" sources uses

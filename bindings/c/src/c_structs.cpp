@@ -7,9 +7,10 @@
 namespace onetip::c_api {
 namespace {
 
-void copySix(double (&dst)[6], const std::array<double, 6>& src) noexcept { std::copy(src.begin(), src.end(), dst); }
-std::array<double, 6> six(const double (&src)[6]) noexcept { return {src[0], src[1], src[2], src[3], src[4], src[5]}; }
-void copyInput(double (&dst)[6], const Input6& v) noexcept { copySix(dst, v.asArray()); }
+void copyInput(double (&dst)[6], const Input6& v) noexcept {
+  const std::array<double, 6> a = v.asArray();
+  std::copy(a.begin(), a.end(), dst);
+}
 
 std::int32_t fill(onetip_error* error, onetip_error_kind kind, const std::string& message) noexcept {
   if (error) {
@@ -60,60 +61,6 @@ std::int32_t reportCurrentException(onetip_error* error) noexcept {
   } catch (...) {
     return fill(error, ONETIP_ERROR_INTERNAL, "internal error: unknown exception");
   }
-}
-
-onetip_options toC(const SensorOptions& o) noexcept {
-  onetip_options c{};
-  c.queue_capacity = o.queue_capacity;
-  c.lossless = o.lossless ? 1 : 0;
-  c.event_queue_capacity = o.event_queue_capacity;
-  c.frame_queue_capacity = o.frame_queue_capacity;
-  c.timing_window = o.timing_window;
-  c.max_consecutive_source_errors = o.max_consecutive_source_errors;
-  c.stop_timeout_ms = o.stop_timeout_ms;
-  c.min_markers = o.min_markers;
-  c.filter = static_cast<std::int32_t>(o.filter);
-  c.filter_window = o.filter_window;
-  c.playback_rate = o.playback_rate;
-  copySix(c.working_range, o.working_range);
-  c.clamp_factor = o.clamp_factor;
-  c.press_mm = o.press_mm;
-  c.release_mm = o.release_mm;
-  copySix(c.gain, o.gain);
-  copySix(c.dead_zone, o.dead_zone);
-  c.filter_min_cutoff_hz = o.filter_min_cutoff_hz;
-  c.filter_beta = o.filter_beta;
-  c.filter_derivative_cutoff_hz = o.filter_derivative_cutoff_hz;
-  return c;
-}
-
-SensorOptions fromC(const onetip_options& c) {
-  if (c.lossless != 0 && c.lossless != 1) throw Error(ErrorKind::input, "options.lossless: must be 0 or 1");
-  if (c.filter < ONETIP_FILTER_NONE || c.filter > ONETIP_FILTER_ONE_EURO)
-    throw Error(ErrorKind::input, "options.filter: must be ONETIP_FILTER_NONE, _MOVING_AVERAGE or _ONE_EURO");
-  SensorOptions o;
-  o.queue_capacity = c.queue_capacity;
-  o.lossless = c.lossless == 1;
-  o.event_queue_capacity = c.event_queue_capacity;
-  o.frame_queue_capacity = c.frame_queue_capacity;
-  o.timing_window = c.timing_window;
-  o.max_consecutive_source_errors = c.max_consecutive_source_errors;
-  o.stop_timeout_ms = c.stop_timeout_ms;
-  o.min_markers = c.min_markers;
-  o.filter = static_cast<FilterKind>(c.filter);
-  o.filter_window = c.filter_window;
-  o.playback_rate = c.playback_rate;
-  o.working_range = six(c.working_range);
-  o.clamp_factor = c.clamp_factor;
-  o.press_mm = c.press_mm;
-  o.release_mm = c.release_mm;
-  o.gain = six(c.gain);
-  o.dead_zone = six(c.dead_zone);
-  o.filter_min_cutoff_hz = c.filter_min_cutoff_hz;
-  o.filter_beta = c.filter_beta;
-  o.filter_derivative_cutoff_hz = c.filter_derivative_cutoff_hz;
-  o.validate();
-  return o;
 }
 
 onetip_event toC(const Event& e) noexcept {

@@ -1,6 +1,6 @@
 // bindings/c/src/c_structs.hpp — the C ABI's flat structs from and to the
 // public C++ types (same units and frames: mm in S, degrees, seconds), and the
-// error reporting of the boundary.
+// error reporting of the boundary. The options struct: c_options.hpp.
 #pragma once
 
 #include <cstdint>
@@ -34,11 +34,20 @@ std::int32_t reportOk(onetip_error* error) noexcept;
 // Call inside a catch block: classifies the exception being handled.
 std::int32_t reportCurrentException(onetip_error* error) noexcept;
 
+// Runs an entry point's body: no exception leaves, a failure becomes its kind and message.
+template <typename Fn>
+std::int32_t boundary(onetip_error* error, Fn&& fn) noexcept {
+  try {
+    fn();
+    return reportOk(error);
+  } catch (...) {
+    return reportCurrentException(error);
+  }
+}
+
 // Copies `text` into a fixed buffer, truncated, always NUL-terminated.
 void copyString(char* dst, std::size_t size, const std::string& text) noexcept;
 
-onetip_options toC(const SensorOptions& o) noexcept;
-SensorOptions fromC(const onetip_options& o);
 onetip_event toC(const Event& e) noexcept;
 onetip_frame toC(const FrameResult& f) noexcept;
 std::vector<onetip_marker> markersToC(const FrameResult& f);

@@ -1,10 +1,12 @@
 // bindings/c/src/onetip_c.cpp — the C ABI (onetip_c.h) over the public C++
 // API. Every entry point runs its body inside boundary(): no exception leaves,
-// each failure becomes an onetip_error_kind and a message.
+// each failure becomes an onetip_error_kind and a message. The options
+// functions are in c_options.cpp.
 #include <chrono>
 #include <cmath>
 
 #include "c_handles.hpp"
+#include "c_options.hpp"
 #include "c_structs.hpp"
 #include "onetip/version.hpp"
 #include "onetip_c.h"
@@ -13,16 +15,6 @@ using namespace onetip;
 using namespace onetip::c_api;
 
 namespace {
-
-template <typename Fn>
-std::int32_t boundary(onetip_error* error, Fn&& fn) noexcept {
-  try {
-    fn();
-    return reportOk(error);
-  } catch (...) {
-    return reportCurrentException(error);
-  }
-}
 
 std::string optionalString(const char* s) { return s ? std::string(s) : std::string(); }
 
@@ -75,34 +67,6 @@ ONETIP_C_API const char* onetip_event_type_name(int32_t type) {
 
 ONETIP_C_API const char* onetip_contact_state_name(int32_t state) {
   return state >= 0 && state <= ONETIP_STATE_SLIP ? toString(static_cast<ContactState>(state)).data() : "unknown";
-}
-
-ONETIP_C_API int32_t onetip_options_default(uint32_t abi_version, onetip_options* out, onetip_error* error) {
-  return boundary(error, [&] {
-    requireAbiVersion(abi_version);
-    requireNonNull(out, "onetip_options_default: out");
-    *out = toC(SensorOptions{});
-  });
-}
-
-ONETIP_C_API int32_t onetip_options_load(uint32_t abi_version, const char* path, onetip_options* out,
-                                         onetip_error* error) {
-  return boundary(error, [&] {
-    requireAbiVersion(abi_version);
-    requireNonNull(path, "onetip_options_load: path");
-    requireNonNull(out, "onetip_options_load: out");
-    *out = toC(SensorOptions::load(path));
-  });
-}
-
-ONETIP_C_API int32_t onetip_options_save(uint32_t abi_version, const onetip_options* options, const char* path,
-                                         onetip_error* error) {
-  return boundary(error, [&] {
-    requireAbiVersion(abi_version);
-    requireNonNull(options, "onetip_options_save: options");
-    requireNonNull(path, "onetip_options_save: path");
-    fromC(*options).save(path);
-  });
 }
 
 ONETIP_C_API int32_t onetip_sensor_create(uint32_t abi_version, const char* source, const char* calibration,

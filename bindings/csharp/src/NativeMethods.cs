@@ -13,6 +13,8 @@ namespace Onetip.Interop
 
         /// <summary>ONETIP_C_ABI_VERSION of the header this wrapper was written against.</summary>
         internal const uint AbiVersion = 1;
+        /// <summary>ONETIP_C_ABI_MINOR_VERSION it needs (1: the option table and keyed access).</summary>
+        internal const uint AbiMinorVersion = 1;
 
         [UnmanagedFunctionPointer(CallingConvention.Cdecl)]
         internal delegate void EventCallback(IntPtr evt, IntPtr user);
@@ -21,6 +23,8 @@ namespace Onetip.Interop
 
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern uint onetip_abi_version();
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern uint onetip_abi_minor_version();
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern IntPtr onetip_version_string();
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
@@ -34,6 +38,21 @@ namespace Onetip.Interop
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern int onetip_options_save(uint abi, [In] SensorOptions options,
                                                        [MarshalAs(UnmanagedType.LPStr)] string path, out NativeError error);
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern int onetip_options_validate(uint abi, [In] SensorOptions options, out NativeError error);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern int onetip_option_count();
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern int onetip_option_describe(uint abi, int row, out NativeOptionInfo info, out NativeError error);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern int onetip_options_get(uint abi, [In] SensorOptions options,
+                                                      [MarshalAs(UnmanagedType.LPStr)] string name, int index,
+                                                      out double value, out NativeError error);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern int onetip_options_set(uint abi, [In, Out] SensorOptions options,
+                                                      [MarshalAs(UnmanagedType.LPStr)] string name, int index,
+                                                      double value, out NativeError error);
 
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern int onetip_sensor_create(uint abi, [MarshalAs(UnmanagedType.LPStr)] string source,

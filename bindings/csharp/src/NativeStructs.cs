@@ -61,4 +61,17 @@ namespace Onetip.Interop
         public int StageCount;
         [MarshalAs(UnmanagedType.ByValArray, SizeConst = 16)] public NativeStageTiming[] Stages;
     }
+
+    [StructLayout(LayoutKind.Sequential, CharSet = CharSet.Ansi)]
+    internal struct NativeOptionInfo
+    {
+        [MarshalAs(UnmanagedType.ByValTStr, SizeConst = 48)] public string Name;
+        public int Type;
+        public int Count;
+        public double Min, Max;
+        [MarshalAs(UnmanagedType.ByValArray, SizeConst = 6)] public double[] DefaultValue;
+        [MarshalAs(UnmanagedType.ByValTStr, SizeConst = 16)] public string Unit;
+        [MarshalAs(UnmanagedType.ByValTStr, SizeConst = 96)] public string Choices;
+        [MarshalAs(UnmanagedType.ByValTStr, SizeConst = 128)] public string Doc;
+    }
 }

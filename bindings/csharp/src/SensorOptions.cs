@@ -1,8 +1,10 @@
-// SensorOptions: how a Sensor runs, laid out as onetip_options (onetip_c.h);
-// onetip/sensor_options.hpp gives each field's meaning, units and range.
-// Start from Default() (the library's defaults) or Load() a YAML/JSON file;
-// the library validates when a Sensor is created (OnetipException, kind
-// Input, naming the bad field). Axis arrays: dx, dy, dz (mm), yaw, pitch, roll (deg).
+// SensorOptions: how a Sensor runs, laid out as onetip_options (onetip_c.h):
+// one field (or property) per row of the library's option table, named as the
+// row in PascalCase; OptionInfo.Table() gives each row's type, default, range,
+// unit and meaning (onetip/sensor_option_table.hpp). Start from Default() (the
+// library's defaults) or Load() a YAML/JSON file; Validate(), Set() and the
+// Sensor check values against the table (OnetipException, kind Input, naming
+// the field, its range and unit). Axis arrays: dx, dy, dz (mm), yaw, pitch, roll (deg).
 using System.Runtime.InteropServices;
 using Onetip.Interop;
 
@@ -50,6 +52,30 @@ namespace Onetip
             NativeError e;
             Errors.Check(NativeMethods.onetip_options_load(NativeMethods.AbiVersion, path, o, out e), ref e);
             return o;
+        }
+
+        /// <summary>Every value in its range and release_mm below press_mm, else OnetipException (Input).</summary>
+        public void Validate()
+        {
+            NativeError e;
+            Errors.Check(NativeMethods.onetip_options_validate(NativeMethods.AbiVersion, this, out e), ref e);
+        }
+
+        /// <summary>Value `index` (0, or 0..5 for axes) of the option `name` (a table row's name).</summary>
+        public double Get(string name, int index = 0)
+        {
+            double value;
+            NativeError e;
+            Errors.Check(NativeMethods.onetip_options_get(NativeMethods.AbiVersion, this, name, index, out value, out e), ref e);
+            return value;
+        }
+
+        /// <summary>Sets value `index` of the option `name` after checking it against the table;
+        /// unchanged when it throws.</summary>
+        public void Set(string name, double value, int index = 0)
+        {
+            NativeError e;
+            Errors.Check(NativeMethods.onetip_options_set(NativeMethods.AbiVersion, this, name, index, value, out e), ref e);
         }
 
         /// <summary>Writes every field as YAML; the file is replaced atomically.</summary>

@@ -3,8 +3,8 @@
 // Every failing call of the public API throws onetip::Error (derived from
 // std::runtime_error, so `catch (const std::exception&)` also works) with a
 // one-line message naming what is wrong ("calibration 'x.yaml': cannot open
-// file", "options.queue_capacity: must be in 1..64") and a kind that says
-// whose fault it is. The C ABI (onetip_c.h) reports the same kinds as codes.
+// file", "options.queue_capacity: must be in [1, 64] frames, got 0") and a
+// kind that says whose fault it is. The C ABI (onetip_c.h) reports the same kinds as codes.
 #pragma once
 
 #include <cstdint>

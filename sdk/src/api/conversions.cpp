@@ -3,24 +3,6 @@
 namespace onetip::api {
 namespace {
 
-input::FilterKind toInternal(FilterKind k) {
-  switch (k) {
-    case FilterKind::moving_average: return input::FilterKind::moving_average;
-    case FilterKind::one_euro: return input::FilterKind::one_euro;
-    case FilterKind::none: break;
-  }
-  return input::FilterKind::none;
-}
-
-FilterKind toPublic(input::FilterKind k) {
-  switch (k) {
-    case input::FilterKind::moving_average: return FilterKind::moving_average;
-    case input::FilterKind::one_euro: return FilterKind::one_euro;
-    case input::FilterKind::none: break;
-  }
-  return FilterKind::none;
-}
-
 EventType toPublic(input::EventType t) { return static_cast<EventType>(static_cast<std::uint8_t>(t)); }
 
 FrameStatus toPublic(pipeline::FrameStatus s) {
@@ -43,58 +25,6 @@ static_assert(static_cast<int>(input::EventType::contact_begin) == static_cast<i
 
 double toClockSeconds(pipeline::SteadyClock::time_point t) noexcept {
   return std::chrono::duration<double>(t.time_since_epoch()).count();
-}
-
-pipeline::PipelineOptions toPipelineOptions(const SensorOptions& o, const pipeline::PipelineOptions& base) {
-  pipeline::PipelineOptions p = base;
-  p.queue_capacity = o.queue_capacity;
-  p.lossless = o.lossless;
-  p.playback_rate = o.playback_rate;
-  p.event_queue_capacity = o.event_queue_capacity;
-  p.frame_queue_capacity = o.frame_queue_capacity;
-  p.timing_window = o.timing_window;
-  p.max_consecutive_source_errors = o.max_consecutive_source_errors;
-  p.stop_timeout_ms = o.stop_timeout_ms;
-  p.processor.min_markers = o.min_markers;
-  input::PoseTrackerOptions& pose = p.processor.pose;
-  pose.working_range = o.working_range;
-  pose.clamp_factor = o.clamp_factor;
-  pose.press.press_mm = o.press_mm;
-  pose.press.release_mm = o.release_mm;
-  pose.shaping.gain = o.gain;
-  pose.shaping.dead_zone = o.dead_zone;
-  pose.filter.kind = toInternal(o.filter);
-  pose.filter.window = o.filter_window;
-  pose.filter.min_cutoff_hz = o.filter_min_cutoff_hz;
-  pose.filter.beta = o.filter_beta;
-  pose.filter.derivative_cutoff_hz = o.filter_derivative_cutoff_hz;
-  return p;
-}
-
-SensorOptions toSensorOptions(const pipeline::PipelineOptions& p) {
-  SensorOptions o;
-  o.queue_capacity = p.queue_capacity;
-  o.lossless = p.lossless;
-  o.playback_rate = p.playback_rate;
-  o.event_queue_capacity = p.event_queue_capacity;
-  o.frame_queue_capacity = p.frame_queue_capacity;
-  o.timing_window = p.timing_window;
-  o.max_consecutive_source_errors = p.max_consecutive_source_errors;
-  o.stop_timeout_ms = p.stop_timeout_ms;
-  o.min_markers = p.processor.min_markers;
-  const input::PoseTrackerOptions& pose = p.processor.pose;
-  o.working_range = pose.working_range;
-  o.clamp_factor = pose.clamp_factor;
-  o.press_mm = pose.press.press_mm;
-  o.release_mm = pose.press.release_mm;
-  o.gain = pose.shaping.gain;
-  o.dead_zone = pose.shaping.dead_zone;
-  o.filter = toPublic(pose.filter.kind);
-  o.filter_window = pose.filter.window;
-  o.filter_min_cutoff_hz = pose.filter.min_cutoff_hz;
-  o.filter_beta = pose.filter.beta;
-  o.filter_derivative_cutoff_hz = pose.filter.derivative_cutoff_hz;
-  return o;
 }
 
 Event toEvent(const pipeline::PipelineEvent& e) {

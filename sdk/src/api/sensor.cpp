@@ -3,6 +3,7 @@
 #include "api/conversions.hpp"
 #include "api/public_error.hpp"
 #include "pipeline/open_pipeline.hpp"
+#include "pipeline/options_io.hpp"
 
 namespace onetip {
 
@@ -15,7 +16,7 @@ Sensor::Sensor(const SensorConfig& config, const SensorOptions& options) : impl_
   api::withPublicErrors([&] {
     impl_->source = config.source;
     impl_->pipeline = pipeline::openPipeline({config.source, config.calibration, config.pattern, config.reference},
-                                             api::toPipelineOptions(options));
+                                             pipeline::toPipelineOptions(options));
   });
 }
 

@@ -3,19 +3,19 @@
 #include <cmath>
 #include <numbers>
 
-#include "core/error.hpp"
+#include "core/option_checks.hpp"
 
 namespace onetip::input {
 
 void InputFilterOptions::validate() const {
-  if (window < 1) throw InputError("input filter options: window must be at least 1");
-  if (!(min_cutoff_hz > 0)) throw InputError("input filter options: min_cutoff_hz must be positive");
-  if (!(beta >= 0)) throw InputError("input filter options: beta must not be negative");
-  if (!(derivative_cutoff_hz > 0)) throw InputError("input filter options: derivative_cutoff_hz must be positive");
+  requireAtLeast("input filter: window", window, 1, "frames");
+  requireAbove("input filter: min_cutoff_hz", min_cutoff_hz, 0, "Hz");
+  requireAtLeast("input filter: beta", beta, 0);
+  requireAbove("input filter: derivative_cutoff_hz", derivative_cutoff_hz, 0, "Hz");
 }
 
 MovingAverageFilter::MovingAverageFilter(int window) : window_(window) {
-  if (window < 1) throw InputError("moving average: window must be at least 1");
+  requireAtLeast("moving average: window", window, 1, "frames");
 }
 
 Input6 MovingAverageFilter::apply(const Input6& x, double) {

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <string>
 
-#include "core/error.hpp"
+#include "core/option_checks.hpp"
 
 namespace onetip::input {
 
@@ -13,9 +13,8 @@ constexpr std::array<const char*, 6> kAxis{"dx", "dy", "dz", "yaw", "pitch", "ro
 
 void InputShaping::validate() const {
   for (size_t k = 0; k < 6; ++k) {
-    if (!std::isfinite(gain[k])) throw InputError(std::string("input shaping: gain of ") + kAxis[k] + " must be finite");
-    if (!(dead_zone[k] >= 0) || !std::isfinite(dead_zone[k]))
-      throw InputError(std::string("input shaping: dead_zone of ") + kAxis[k] + " must be a non-negative number");
+    requireFinite(std::string("input shaping: gain of ") + kAxis[k], gain[k]);
+    requireAtLeast(std::string("input shaping: dead_zone of ") + kAxis[k], dead_zone[k], 0);
   }
 }
 

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <string>
 
-#include "core/error.hpp"
+#include "core/option_checks.hpp"
 
 namespace onetip::input {
 
@@ -15,10 +15,8 @@ void PoseTrackerOptions::validate() const {
   filter.validate();
   shaping.validate();
   press.validate();
-  for (double r : working_range)
-    if (!(r > 0) || !std::isfinite(r)) throw InputError("pose tracker options: working_range entries must be positive");
-  if (!(clamp_factor >= 1) || !std::isfinite(clamp_factor))
-    throw InputError("pose tracker options: clamp_factor must be at least 1");
+  for (double r : working_range) requireAbove("pose tracker: working_range entries", r, 0);
+  requireAtLeast("pose tracker: clamp_factor", clamp_factor, 1);
 }
 
 PoseTracker::PoseTracker(PoseTrackerOptions options)

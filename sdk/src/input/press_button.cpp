@@ -1,15 +1,12 @@
 #include "input/press_button.hpp"
 
-#include <cmath>
-
-#include "core/error.hpp"
+#include "core/option_checks.hpp"
 
 namespace onetip::input {
 
 void PressButtonOptions::validate() const {
-  if (!std::isfinite(press_mm) || !(press_mm > 0)) throw InputError("press button: press_mm must be a positive number");
-  if (!std::isfinite(release_mm) || !(release_mm < press_mm))
-    throw InputError("press button: release_mm must be a number below press_mm");
+  requireAbove("press button: press_mm", press_mm, 0, "mm");
+  requireBelow("press button: release_mm", release_mm, "press_mm", press_mm);
 }
 
 PressButton::PressButton(PressButtonOptions options) : options_(options) { options_.validate(); }

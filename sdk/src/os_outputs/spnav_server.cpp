@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "core/option_checks.hpp"
 #include "os_outputs/output_intent.hpp"
 #include "os_outputs/spnav_protocol.hpp"
 #include "os_outputs/unix_listener.hpp"
@@ -29,13 +30,6 @@ constexpr size_t kStageMessages = 16;      // queued events moved to the socket 
 constexpr size_t kMaxStagedBytes = 65536;  // stop reading a client whose replies pile up
 constexpr int kBacklog = 16;
 
-template <typename T>
-void requireInRange(const char* field, T value, T lo, T hi) {
-  if (!(value >= lo && value <= hi)) {
-    throw InputError(std::string("spnav options: ") + field + ": must be in [" + std::to_string(lo) + ", " +
-                     std::to_string(hi) + "]");
-  }
-}
 }  // namespace
 
 void SpnavServerOptions::validate() const {
@@ -44,10 +38,10 @@ void SpnavServerOptions::validate() const {
   if (!std::isfinite(full_scale) || full_scale <= 0 || full_scale > 1e6) {
     throw InputError("spnav options: full_scale: must be in (0, 1e6]");
   }
-  requireInRange("max_clients", max_clients, 1, 1024);
-  requireInRange("max_queued_events", max_queued_events, 1, 65536);
-  requireInRange("hello_timeout_ms", hello_timeout_ms, 0, 10000);
-  requireInRange("idle_timeout_ms", idle_timeout_ms, 100, 3600000);
+  requireInRange("spnav options: max_clients", max_clients, 1, 1024, "clients");
+  requireInRange("spnav options: max_queued_events", max_queued_events, 1, 65536, "events");
+  requireInRange("spnav options: hello_timeout_ms", hello_timeout_ms, 0, 10000, "ms");
+  requireInRange("spnav options: idle_timeout_ms", idle_timeout_ms, 100, 3600000, "ms");
 }
 
 struct SpnavServer::State {

@@ -1,145 +1,150 @@
 #include "pipeline/options_io.hpp"
 
-#include <algorithm>
-#include <array>
 #include <set>
+#include <type_traits>
 #include <vector>
 
 #include "core/config_file.hpp"
 #include "core/error.hpp"
 #include "core/filestorage_io.hpp"
+#include "core/option_table.hpp"
 
 namespace onetip::pipeline {
 namespace {
 
-const std::set<std::string> kKeys{
-    "queue_capacity", "lossless",       "playback_rate", "event_queue_capacity", "frame_queue_capacity",
-    "timing_window",  "max_consecutive_source_errors",   "stop_timeout_ms",      "min_markers",
-    "working_range",  "clamp_factor",   "press_mm",      "release_mm",           "gain",
-    "dead_zone",      "filter",         "filter_window", "filter_min_cutoff_hz", "filter_beta",
-    "filter_derivative_cutoff_hz"};
+// Calls fn(option, setting) for every option and the pipeline setting it feeds.
+// S and P are SensorOptions and PipelineOptions, either of them const.
+template <typename S, typename P, typename Fn>
+void forEachPipelineField(S& s, P& p, Fn&& fn) {
+  auto& pose = p.processor.pose;
+  fn(s.queue_capacity, p.queue_capacity);
+  fn(s.lossless, p.lossless);
+  fn(s.playback_rate, p.playback_rate);
+  fn(s.event_queue_capacity, p.event_queue_capacity);
+  fn(s.frame_queue_capacity, p.frame_queue_capacity);
+  fn(s.timing_window, p.timing_window);
+  fn(s.max_consecutive_source_errors, p.max_consecutive_source_errors);
+  fn(s.stop_timeout_ms, p.stop_timeout_ms);
+  fn(s.min_markers, p.processor.min_markers);
+  fn(s.working_range, pose.working_range);
+  fn(s.clamp_factor, pose.clamp_factor);
+  fn(s.press_mm, pose.press.press_mm);
+  fn(s.release_mm, pose.press.release_mm);
+  fn(s.gain, pose.shaping.gain);
+  fn(s.dead_zone, pose.shaping.dead_zone);
+  fn(s.filter, pose.filter.kind);
+  fn(s.filter_window, pose.filter.window);
+  fn(s.filter_min_cutoff_hz, pose.filter.min_cutoff_hz);
+  fn(s.filter_beta, pose.filter.beta);
+  fn(s.filter_derivative_cutoff_hz, pose.filter.derivative_cutoff_hz);
+}
 
-const std::array<std::pair<input::FilterKind, const char*>, 3> kFilters{
-    {{input::FilterKind::none, "none"}, {input::FilterKind::moving_average, "moving_average"},
-     {input::FilterKind::one_euro, "one_euro"}}};
+static_assert(static_cast<int>(input::FilterKind::none) == static_cast<int>(FilterKind::none) &&
+              static_cast<int>(input::FilterKind::moving_average) == static_cast<int>(FilterKind::moving_average) &&
+              static_cast<int>(input::FilterKind::one_euro) == static_cast<int>(FilterKind::one_euro));
 
-// Reads one key at a time into `options` and validates right after each, so a
-// value the options refuse is reported at its own key and line (the base
-// options are valid, so the first failure belongs to the key just read).
-class Reader {
- public:
-  Reader(const ConfigNode& root, PipelineOptions& options) : root_(root), options_(options) {}
+template <typename To, typename From>
+void copyValue(To& to, const From& from) {
+  if constexpr (std::is_enum_v<To>)
+    to = static_cast<To>(static_cast<int>(from));
+  else
+    to = from;
+}
 
-  void real(const char* key, double& out) const {
-    const ConfigNode n = root_[key];
-    if (!n.present()) return;
-    out = n.real(-kLimit, kLimit);
-    check(n);
+// The values of a present key, of the row's type and inside its range (the
+// messages of config_file.hpp, naming the file, line and key).
+std::vector<double> readKey(const ConfigNode& n, const OptionInfo& row) {
+  switch (row.type) {
+    case OptionType::integer:
+      return {static_cast<double>(n.integer(static_cast<int>(row.min), static_cast<int>(row.max)))};
+    case OptionType::real:
+      return {n.real(row.min, row.max)};
+    case OptionType::flag:
+      return {n.flag() ? 1.0 : 0.0};
+    case OptionType::axes:
+      return n.reals(6, row.min, row.max);
+    case OptionType::choice:
+      break;
   }
-  void integer(const char* key, int& out) const {
-    const ConfigNode n = root_[key];
-    if (!n.present()) return;
-    out = n.integer(-static_cast<int>(kLimit), static_cast<int>(kLimit));
-    check(n);
+  const std::string text = n.text();
+  std::string expected;
+  for (std::size_t c = 0; c < row.choices.size(); ++c) {
+    if (text == row.choices[c]) return {static_cast<double>(c)};
+    expected += (c == 0 ? "\"" : c + 1 == row.choices.size() ? " or \"" : ", \"") + std::string(row.choices[c]) + "\"";
   }
-  void flag(const char* key, bool& out) const {
-    const ConfigNode n = root_[key];
-    if (!n.present()) return;
-    out = n.flag();
-    check(n);
-  }
-  void six(const char* key, std::array<double, 6>& out) const {
-    const ConfigNode n = root_[key];
-    if (!n.present()) return;
-    const std::vector<double> v = n.reals(6, -kLimit, kLimit);
-    std::copy(v.begin(), v.end(), out.begin());
-    check(n);
-  }
-  void filter(const char* key, input::FilterKind& out) const {
-    const ConfigNode n = root_[key];
-    if (!n.present()) return;
-    const std::string name = n.text();
-    for (const auto& [kind, text] : kFilters)
-      if (name == text) {
-        out = kind;
-        return check(n);
-      }
-    n.fail("expected \"none\", \"moving_average\" or \"one_euro\", got \"" + name + "\"");
-  }
+  n.fail("expected " + expected + ", got \"" + text + "\"");
+}
 
- private:
-  static constexpr double kLimit = 1e9;  // beyond any option's range: the options' own checks say more
-  void check(const ConfigNode& n) const {
-    try {
-      options_.validate();
-    } catch (const InputError& e) {
-      n.fail(e.what());
-    }
+void writeKey(cv::FileStorage& fs, const OptionInfo& row, std::size_t option, const SensorOptions& o) {
+  const double v = option_table::get(o, option, 0);
+  fs << row.name;
+  switch (row.type) {
+    case OptionType::integer:
+    case OptionType::flag:
+      fs << static_cast<int>(v);
+      return;
+    case OptionType::real:
+      fs << v;
+      return;
+    case OptionType::choice:
+      fs << row.choices[static_cast<std::size_t>(v)];
+      return;
+    case OptionType::axes:
+      fs << "[";
+      for (int k = 0; k < 6; ++k) fs << option_table::get(o, option, k);
+      fs << "]";
+      return;
   }
-  ConfigNode root_;
-  PipelineOptions& options_;
-};
-
-void writeSix(cv::FileStorage& fs, const char* key, const std::array<double, 6>& v) {
-  fs << key << "[";
-  for (double x : v) fs << x;
-  fs << "]";
 }
 
 }  // namespace
 
-PipelineOptions loadPipelineOptions(const std::string& path, const PipelineOptions& base) {
-  const ConfigNode root = ConfigNode::load(path);
-  root.allowOnly(kKeys);
-  PipelineOptions o = base;
-  o.validate();
-  const Reader r(root, o);
-  input::PoseTrackerOptions& pose = o.processor.pose;
-  r.integer("queue_capacity", o.queue_capacity);
-  r.flag("lossless", o.lossless);
-  r.real("playback_rate", o.playback_rate);
-  r.integer("event_queue_capacity", o.event_queue_capacity);
-  r.integer("frame_queue_capacity", o.frame_queue_capacity);
-  r.integer("timing_window", o.timing_window);
-  r.integer("max_consecutive_source_errors", o.max_consecutive_source_errors);
-  r.integer("stop_timeout_ms", o.stop_timeout_ms);
-  r.integer("min_markers", o.processor.min_markers);
-  r.six("working_range", pose.working_range);
-  r.real("clamp_factor", pose.clamp_factor);
-  r.real("press_mm", pose.press.press_mm);
-  r.real("release_mm", pose.press.release_mm);
-  r.six("gain", pose.shaping.gain);
-  r.six("dead_zone", pose.shaping.dead_zone);
-  r.filter("filter", pose.filter.kind);
-  r.integer("filter_window", pose.filter.window);
-  r.real("filter_min_cutoff_hz", pose.filter.min_cutoff_hz);
-  r.real("filter_beta", pose.filter.beta);
-  r.real("filter_derivative_cutoff_hz", pose.filter.derivative_cutoff_hz);
+PipelineOptions toPipelineOptions(const SensorOptions& o, const PipelineOptions& base) {
+  PipelineOptions p = base;
+  forEachPipelineField(o, p, [](const auto& option, auto& setting) { copyValue(setting, option); });
+  return p;
+}
+
+SensorOptions toSensorOptions(const PipelineOptions& p) {
+  SensorOptions o;
+  forEachPipelineField(o, p, [](auto& option, const auto& setting) { copyValue(option, setting); });
   return o;
 }
 
-void savePipelineOptions(const PipelineOptions& o, const std::string& path) {
-  o.validate();
-  const input::PoseTrackerOptions& pose = o.processor.pose;
+SensorOptions loadSensorOptions(const std::string& path, const SensorOptions& base) {
+  const ConfigNode root = ConfigNode::load(path);
+  const std::span<const OptionInfo> rows = option_table::rows();
+  std::set<std::string> keys;
+  for (const OptionInfo& row : rows) keys.insert(row.name);
+  root.allowOnly(keys);
+  option_table::validate(base);
+  SensorOptions o = base;
+  // Table order, each key validated right after it is read, so a relation the
+  // options refuse is reported at the key that broke it (the base is valid).
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const ConfigNode n = root[rows[i].name];
+    if (!n.present()) continue;
+    const std::vector<double> values = readKey(n, rows[i]);
+    try {
+      for (std::size_t k = 0; k < values.size(); ++k) option_table::set(o, i, static_cast<int>(k), values[k]);
+      option_table::validate(o);
+    } catch (const InputError& e) {
+      n.fail(e.what());
+    }
+  }
+  return o;
+}
+
+void saveSensorOptions(const SensorOptions& o, const std::string& path) {
+  option_table::validate(o);
   YamlWriter w;
-  cv::FileStorage& fs = w.fs();
-  fs << "queue_capacity" << o.queue_capacity << "lossless" << (o.lossless ? 1 : 0) << "playback_rate"
-     << o.playback_rate << "event_queue_capacity" << o.event_queue_capacity << "frame_queue_capacity"
-     << o.frame_queue_capacity << "timing_window" << o.timing_window << "max_consecutive_source_errors"
-     << o.max_consecutive_source_errors << "stop_timeout_ms" << o.stop_timeout_ms << "min_markers"
-     << o.processor.min_markers;
-  writeSix(fs, "working_range", pose.working_range);
-  fs << "clamp_factor" << pose.clamp_factor << "press_mm" << pose.press.press_mm << "release_mm"
-     << pose.press.release_mm;
-  writeSix(fs, "gain", pose.shaping.gain);
-  writeSix(fs, "dead_zone", pose.shaping.dead_zone);
-  const char* filter = "none";
-  for (const auto& [kind, text] : kFilters)
-    if (kind == pose.filter.kind) filter = text;
-  fs << "filter" << filter << "filter_window" << pose.filter.window << "filter_min_cutoff_hz"
-     << pose.filter.min_cutoff_hz << "filter_beta" << pose.filter.beta << "filter_derivative_cutoff_hz"
-     << pose.filter.derivative_cutoff_hz;
+  const std::span<const OptionInfo> rows = option_table::rows();
+  for (std::size_t i = 0; i < rows.size(); ++i) writeKey(w.fs(), rows[i], i, o);
   w.save(path);
+}
+
+PipelineOptions loadPipelineOptions(const std::string& path, const PipelineOptions& base) {
+  return toPipelineOptions(loadSensorOptions(path, toSensorOptions(base)), base);
 }
 
 }  // namespace onetip::pipeline

@@ -2,34 +2,20 @@
 
 #include <condition_variable>
 #include <mutex>
-#include <sstream>
 #include <thread>
 
 #include "core/error.hpp"
+#include "core/option_table.hpp"
 #include "pipeline/capture_loop.hpp"
+#include "pipeline/options_io.hpp"
 
 namespace onetip::pipeline {
-namespace {
 
-void requireRange(const char* field, double value, double lo, double hi) {
-  if (!(value >= lo && value <= hi)) {
-    std::ostringstream msg;
-    msg << "pipeline options: " << field << ": must be in [" << lo << ", " << hi << "]";
-    throw InputError(msg.str());
-  }
-}
-
-}  // namespace
-
+// The options' ranges and relations come from the table
+// (onetip/sensor_option_table.hpp), the processor's own settings from its modules.
 void PipelineOptions::validate() const {
+  option_table::validate(toSensorOptions(*this));
   processor.validate();
-  requireRange("queue_capacity", queue_capacity, 1, 64);
-  requireRange("playback_rate", playback_rate, 0, 1e6);
-  requireRange("event_queue_capacity", event_queue_capacity, 0, 1e6);
-  requireRange("frame_queue_capacity", frame_queue_capacity, 0, 1000);
-  requireRange("timing_window", timing_window, 10, 1e6);
-  requireRange("max_consecutive_source_errors", max_consecutive_source_errors, 1, 1e6);
-  requireRange("stop_timeout_ms", stop_timeout_ms, 10, 600000);
 }
 
 struct Pipeline::Processing {

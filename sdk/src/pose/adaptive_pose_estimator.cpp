@@ -137,16 +137,20 @@ Eigen::Isometry3d AdaptivePoseEstimator::solveIncrement(const contact::ContactFi
   // then the stick set was too thin to follow a turn about its own line (a
   // plate's edge strip as it tilts), the markers' rigid motion is the
   // finger's, and they stick again.
-  if (policy == ModelPolicy::adaptive && evidence.n_stick + evidence.n_slip >= options_.min_macro_markers) {
-    const contact::ContactRegion& region = field.regions[static_cast<size_t>(step.region)];
-    const RigidFit rigid = fitConsecutive(members, before, now, t_.robust_mm);
-    if (rigid.ok && !footprintDrift(field, now, region, rigid.motion * pose_).decided) {
-      classifier_.markAllSticking(now, rigid.motion * pose_);
-      step.model = PoseModel::kabsch;
-      return rigid.motion;
-    }
-    enterMacroSlip(now, centroid_step);
+  // The same holds for a contact too small to declare macroscopic slip, when
+  // its markers span an area (a strip cannot fix a turn about itself): while
+  // the finger turns, the translation-only fallback would freeze the tilt.
+  if (policy != ModelPolicy::adaptive) return centroid_step;
+  const bool developed = evidence.n_stick + evidence.n_slip >= options_.min_macro_markers;
+  const contact::ContactRegion& region = field.regions[static_cast<size_t>(step.region)];
+  const RigidFit rigid = fitConsecutive(members, before, now, t_.robust_mm);
+  const Drift drift = rigid.ok ? footprintDrift(field, now, region, rigid.motion * pose_) : Drift{};
+  if (rigid.ok && (developed ? !drift.decided : drift.turning && spansArea(members, now))) {
+    classifier_.markAllSticking(now, rigid.motion * pose_);
+    step.model = PoseModel::kabsch;
+    return rigid.motion;
   }
+  if (developed) enterMacroSlip(now, centroid_step);
   return centroid_step;
 }
 
@@ -166,9 +170,8 @@ AdaptivePoseEstimator::Drift AdaptivePoseEstimator::footprintDrift(const contact
   if (static_cast<int>(history_.size()) < window) return out;
   const Frame& old = history_[history_.size() - static_cast<size_t>(window)];
   const double size = static_cast<double>(region.markers.size());
-  if (tiltBetween(next, old.pose) > options_.macro_tilt_gate_deg * kRadPerDeg ||
-      std::abs(size - old.region_size) > options_.macro_size_change * old.region_size)
-    return out;
+  out.turning = tiltBetween(next, old.pose) > options_.macro_tilt_gate_deg * kRadPerDeg;
+  if (out.turning || std::abs(size - old.region_size) > options_.macro_size_change * old.region_size) return out;
   out.decided = true;
   // Where the footprint would be had it stayed fixed on the finger (carried by
   // the motion, plus the shift rho by which a rolling finger moves its own
@@ -224,6 +227,13 @@ void AdaptivePoseEstimator::remember(const contact::ContactField& field, const M
   history_.push_back({now, field.displacement, field.region_cut_mm, region.markers, region.footprint_centre, pose_,
                       static_cast<double>(region.markers.size())});
   while (static_cast<int>(history_.size()) > t_.window_frames) history_.pop_front();
+}
+
+bool AdaptivePoseEstimator::spansArea(const std::vector<int>& members, const MarkerField& now) const {
+  std::vector<Eigen::Vector3d> p;
+  for (int id : members)
+    if (now.valid[static_cast<size_t>(id)]) p.push_back(now.position[static_cast<size_t>(id)]);
+  return p.size() >= 3 && planarSpread(p).x() >= t_.min_spread_mm;
 }
 
 std::pair<Eigen::Vector3d, Eigen::Vector3d> AdaptivePoseEstimator::commonFootprints(

@@ -15,7 +15,10 @@
 //       partial slip (Eq. 16 holds)          -> Ceres stick/slip least squares (Eq. 13-15);
 //       Eq. 16 fails (macroscopic slip)      -> motion of the footprint centroid
 //         (for a contact smaller than min_macro_markers, whose footprint is
-//         too coarse, the mean motion of its markers instead).
+//         too coarse, the mean motion of its markers instead; but while the
+//         finger visibly turns, i.e. the markers' rigid motion tilts it beyond
+//         macro_tilt_gate_deg over the window, and they span an area, that
+//         rigid motion: a translation would freeze the tilt at the reversal).
 //     Every model yields an increment and T_k = dT_k T_{k-1}, so a hand-over
 //     between models never makes the output jump.
 //  3. Macroscopic slip is entered when Eq. 16 fails on a developed contact
@@ -97,6 +100,7 @@ class AdaptivePoseEstimator {
   Eigen::Isometry3d solveIncrement(const contact::ContactField& field, const MarkerField& now, PoseStep& step);
   struct Drift {
     Eigen::Vector3d drift{0, 0, 0};  // footprint off the finger over the window (S.x, S.y; mm)
+    bool turning = false;            // the finger tilted beyond the gate over the window (a full window)
     bool decided = false;            // the finger neither turned nor the region resized beyond the gates
     bool exceeds = false;            // decided, and beyond the tolerance
   };
@@ -109,6 +113,8 @@ class AdaptivePoseEstimator {
   std::pair<Eigen::Vector3d, Eigen::Vector3d> commonFootprints(const Frame& before, const contact::ContactField& field,
                                                               const std::vector<int>& members,
                                                               const MarkerField& now) const;
+  // The valid members' smaller principal x-y extent reaches the min spread (they fix a general rotation).
+  bool spansArea(const std::vector<int>& members, const MarkerField& now) const;
   Eigen::Isometry3d centroidStep(const contact::ContactField& field, const std::vector<int>& members,
                                  const MarkerField& now) const;
   void remember(const contact::ContactField& field, const MarkerField& now, const contact::ContactRegion& region);

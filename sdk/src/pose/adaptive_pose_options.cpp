@@ -4,8 +4,7 @@
 #include <cmath>
 #include <string>
 
-#include "core/csv_table.hpp"
-#include "core/error.hpp"
+#include "core/option_checks.hpp"
 #include "core/rotation.hpp"
 
 namespace onetip::pose {
@@ -13,9 +12,7 @@ namespace onetip::pose {
 namespace {
 
 void requireIn(double v, double lo, double hi, const char* name, const char* unit) {
-  if (!(v >= lo && v <= hi))
-    throw InputError(std::string("pose options: ") + name + " must be in [" + formatNumber(lo) + ", " +
-                     formatNumber(hi) + "]" + unit + ", got " + formatNumber(v));
+  requireInRange(std::string("pose options: ") + name, v, lo, hi, unit);
 }
 
 }  // namespace
@@ -27,18 +24,18 @@ void AdaptivePoseOptions::validate() const {
   requireIn(robust_sigmas, 1, 1000, "robust_sigmas", "");
   requireIn(rotation_significance, 0, 100, "rotation_significance", "");
   requireIn(min_rotation_spread_pitches, 0.05, 5, "min_rotation_spread_pitches", "");
-  requireIn(stick_hold_s, 0.001, 10, "stick_hold_s", " s");
+  requireIn(stick_hold_s, 0.001, 10, "stick_hold_s", "s");
   requireIn(stick_hold_min_frames, 1, 1000, "stick_hold_min_frames", "");
   requireIn(min_macro_markers, 1, 10000, "min_macro_markers", "");
-  requireIn(macro_window_s, 0.01, 2, "macro_window_s", " s");
+  requireIn(macro_window_s, 0.01, 2, "macro_window_s", "s");
   requireIn(macro_drift_pitches, 0.001, 2, "macro_drift_pitches", "");
   requireIn(macro_drift_ratio, 0.05, 0.95, "macro_drift_ratio", "");
-  requireIn(macro_tilt_gate_deg, 0.01, 90, "macro_tilt_gate_deg", " deg");
+  requireIn(macro_tilt_gate_deg, 0.01, 90, "macro_tilt_gate_deg", "deg");
   requireIn(macro_size_change, 0.01, 10, "macro_size_change", "");
   requireIn(macro_confirm, 1, 100, "macro_confirm", "");
   requireIn(macro_exit_lag_pitches, 0.001, 2, "macro_exit_lag_pitches", "");
-  requireIn(max_speed_mm_s, 1, 10000, "max_speed_mm_s", " mm/s");
-  requireIn(max_rate_deg_s, 1, 100000, "max_rate_deg_s", " deg/s");
+  requireIn(max_speed_mm_s, 1, 10000, "max_speed_mm_s", "mm/s");
+  requireIn(max_rate_deg_s, 1, 100000, "max_rate_deg_s", "deg/s");
 }
 
 EstimatorThresholds deriveThresholds(const AdaptivePoseOptions& o, const SensorSelf& self) {

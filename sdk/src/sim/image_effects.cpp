@@ -4,20 +4,13 @@
 #include <cmath>
 #include <numbers>
 #include <opencv2/imgproc.hpp>
-#include <string>
 #include <vector>
 
-#include "core/error.hpp"
+#include "core/option_checks.hpp"
 
 namespace onetip::sim {
 
 namespace {
-
-void requireRange(double value, double lo, double hi, const char* field) {
-  if (!(value >= lo && value <= hi))
-    throw InputError(std::string("image effects: ") + field + ": must be in [" + cv::format("%g", lo) + ", " +
-                     cv::format("%g", hi) + "]");
-}
 
 // Independent random stream per effect, so switching one effect on or off
 // leaves the others' realisations unchanged (splitmix64 finaliser).
@@ -129,14 +122,14 @@ void lighting(cv::Mat1f& grey, const ImageEffects& e, cv::RNG rng) {
 }  // namespace
 
 void ImageEffects::validate() const {
-  requireRange(noise_sigma, 0, 50, "noise_sigma");
-  requireRange(blur_sigma, 0, 20, "blur_sigma");
-  requireRange(vignetting, 0, 1, "vignetting");
-  requireRange(exposure, 0.2, 3, "exposure");
-  requireRange(light_gradient, 0, 1, "light_gradient");
-  requireRange(dust_blobs, 0, 200, "dust_blobs");
-  requireRange(specular_spots, 0, 200, "specular_spots");
-  requireRange(occlusion_fraction, 0, 0.9, "occlusion_fraction");
+  requireInRange("image effects: noise_sigma", noise_sigma, 0, 50, "grey levels");
+  requireInRange("image effects: blur_sigma", blur_sigma, 0, 20, "px");
+  requireInRange("image effects: vignetting", vignetting, 0, 1);
+  requireInRange("image effects: exposure", exposure, 0.2, 3);
+  requireInRange("image effects: light_gradient", light_gradient, 0, 1);
+  requireInRange("image effects: dust_blobs", dust_blobs, 0, 200, "per view");
+  requireInRange("image effects: specular_spots", specular_spots, 0, 200, "per view");
+  requireInRange("image effects: occlusion_fraction", occlusion_fraction, 0, 0.9);
 }
 
 void applyImageEffects(cv::Mat1f& grey, const cv::Mat1b& pad, const ImageEffects& e, std::uint64_t seed) {

@@ -73,7 +73,8 @@ std::vector<std::string> header() {
   for (const char* axis : {"dx", "dy", "dz", "yaw", "pitch", "roll"}) h.push_back(std::string("rmse_") + axis);
   for (const char* axis : {"dx", "dy", "dz", "yaw", "pitch", "roll"}) h.push_back(std::string("max_") + axis);
   for (const char* c : {"longest_excess", "first_excess_frame", "excess_axis", "excess_truth_state", "excess_model",
-                        "diverged", "ms_per_frame", "marker_rmse_mm"})
+                        "diverged", "ms_per_frame", "marker_rmse_mm", "stick_precision", "stick_recall",
+                        "excess_true_stick"})
     h.push_back(c);
   return h;
 }
@@ -98,6 +99,9 @@ std::vector<std::string> row(const char* level, const sim::RandomConditions& c, 
   r.push_back(s.diverged ? "1" : "0");
   r.push_back(num(ms));
   r.push_back(num(marker_rmse));
+  r.push_back(num(s.stick_precision));
+  r.push_back(num(s.stick_recall));
+  r.push_back(std::to_string(s.excess_true_stick));
   return r;
 }
 

@@ -12,6 +12,20 @@ bool inWorkingRange(const Input6& g) {
 
 bool inLinearRange(const Input6& g) { return inWorkingRange(g) && std::abs(g.dx) <= 1.5 && std::abs(g.dy) <= 1.5; }
 
+namespace {
+
+bool trulySticks(const ReplayFrame& f, size_t i) {
+  return i < f.gt_contact_markers.size() && f.gt_contact_markers[i] && !(i < f.gt_slip.size() && f.gt_slip[i]);
+}
+
+int countTrulySticking(const ReplayFrame& f) {
+  int n = 0;
+  for (size_t i = 0; i < f.gt_contact_markers.size(); ++i) n += trulySticks(f, i) ? 1 : 0;
+  return n;
+}
+
+}  // namespace
+
 RunScore scoreRun(const std::vector<ReplayFrame>& frames) {
   RunScore s;
   s.frames = static_cast<int>(frames.size());
@@ -19,6 +33,8 @@ RunScore scoreRun(const std::vector<ReplayFrame>& frames) {
   int stretch = 0, stretch_axis = -1;
   ContactState stretch_state = ContactState::none;
   pose::PoseModel stretch_model = pose::PoseModel::none;
+  int stretch_true_stick = -1;
+  long labelled = 0, truly = 0, both = 0;
   for (size_t k = 0; k < frames.size(); ++k) {
     const ReplayFrame& f = frames[k];
     if (!f.gt_contact) {
@@ -27,6 +43,13 @@ RunScore scoreRun(const std::vector<ReplayFrame>& frames) {
     }
     ++s.contact_frames;
     s.contact_missed += f.contact ? 0 : 1;
+    if (f.contact)
+      for (size_t i = 0; i < f.stick.size(); ++i) {
+        const bool t = trulySticks(f, i);
+        labelled += f.stick[i];
+        truly += t ? 1 : 0;
+        both += (f.stick[i] && t) ? 1 : 0;
+      }
     if (!inWorkingRange(f.gt)) {
       stretch = 0;
       continue;
@@ -48,6 +71,7 @@ RunScore scoreRun(const std::vector<ReplayFrame>& frames) {
       stretch_axis = axis;
       stretch_state = f.gt_state;
       stretch_model = f.model;
+      stretch_true_stick = countTrulySticking(f);
     }
     if (stretch > s.longest_excess) {
       s.longest_excess = stretch;
@@ -55,8 +79,11 @@ RunScore scoreRun(const std::vector<ReplayFrame>& frames) {
       s.excess_axis = stretch_axis;
       s.excess_truth_state = stretch_state;
       s.excess_model = stretch_model;
+      s.excess_true_stick = stretch_true_stick;
     }
   }
+  s.stick_precision = labelled ? static_cast<double>(both) / static_cast<double>(labelled) : 0.0;
+  s.stick_recall = truly ? static_cast<double>(both) / static_cast<double>(truly) : 0.0;
   for (size_t a = 0; a < 6; ++a) s.linear_rmse[a] = s.linear_frames ? std::sqrt(squares[a] / s.linear_frames) : 0.0;
   s.diverged = s.longest_excess > kDivergenceFrames;
   return s;

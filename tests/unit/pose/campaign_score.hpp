@@ -10,6 +10,12 @@
 //   linear range: the working range with |dx|, |dy| <= 1.5 mm;
 //   divergence: some axis's error beyond 1 mm or 5 deg in more than
 //     kDivergenceFrames consecutive working-range frames of one contact.
+// Stick labels against the truth, over the contact frames where the estimate
+// tracks: a marker truly sticks when its node touches an indenter and does
+// not slip (the simulator's per-node labels); such markers move rigidly with
+// the finger, so they are the set a stick fit needs.
+//   precision = |labelled stick and truly sticking| / |labelled stick|
+//   recall    = |labelled stick and truly sticking| / |truly sticking|
 #pragma once
 
 #include <array>
@@ -39,6 +45,8 @@ struct RunScore {
   int excess_axis = -1;      // the axis (0..5: dx .. roll) beyond its limit first in that stretch
   ContactState excess_truth_state = ContactState::none;   // the truth's contact state there
   pose::PoseModel excess_model = pose::PoseModel::none;   // the estimate's model there
+  int excess_true_stick = -1;  // markers truly sticking at the first frame of that stretch (-1: none)
+  double stick_precision = 0, stick_recall = 0;  // of the estimate's stick labels (see above; 0 when undefined)
 };
 
 RunScore scoreRun(const std::vector<ReplayFrame>& frames);

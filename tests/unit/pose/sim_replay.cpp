@@ -59,11 +59,14 @@ ReplayFrame replayFrame(const sim::GroundTruthFrame& f, const input::TrackerResu
   out.regions = static_cast<int>(r.field.regions.size());
   out.region.assign(static_cast<size_t>(marker_count), 0);
   out.slip.assign(static_cast<size_t>(marker_count), 0);
+  out.stick.assign(static_cast<size_t>(marker_count), 0);
   if (r.step.active) {
     for (int id : r.field.regions[static_cast<size_t>(r.step.region)].markers) out.region[static_cast<size_t>(id)] = 1;
     out.region_markers = static_cast<int>(r.field.regions[static_cast<size_t>(r.step.region)].markers.size());
-    for (size_t i = 0; i < r.step.labels.size(); ++i)
+    for (size_t i = 0; i < r.step.labels.size(); ++i) {
       out.slip[i] = r.step.labels[i] == contact::MarkerLabel::slip ? 1 : 0;
+      out.stick[i] = r.step.labels[i] == contact::MarkerLabel::stick ? 1 : 0;
+    }
   }
   for (const auto& e : r.events) out.events.push_back(e.type);
   return out;

@@ -39,7 +39,7 @@ struct ReplayFrame {
   bool contact = false;
   ContactState state = ContactState::none;
   Input6 raw, composed, euler_sum;
-  std::vector<std::uint8_t> region, slip;  // primary region members, markers labelled slip
+  std::vector<std::uint8_t> region, slip, stick;  // primary region members, markers labelled slip, stick
   int regions = 0;
   bool out_of_range = false;
   pose::PoseModel model = pose::PoseModel::none;

@@ -59,3 +59,24 @@ TEST(CampaignScore, TheLinearRangeStopsAtOnePointFiveMillimetres) {
   EXPECT_NEAR(s.linear_rmse[0], 0.1, 1e-12);
   EXPECT_NEAR(s.max_error[0], 0.5, 1e-12);
 }
+
+TEST(CampaignScore, StickLabelsAreJudgedAgainstTheMarkersThatTrulyTouchAndStick) {
+  // Five markers: 0-2 touch and stick, 3 touches and slips, 4 does not touch.
+  ReplayFrame f = frame(0, 0);
+  f.gt_contact_markers = {1, 1, 1, 1, 0};
+  f.gt_slip = {0, 0, 0, 1, 0};
+  f.stick = {1, 1, 0, 1, 1};  // two right, one missed, two wrong
+  std::vector<ReplayFrame> frames(4, f);
+  frames[3].contact = false;  // a frame the estimate does not track is not judged
+  frames[3].stick = {0, 0, 0, 0, 0};
+  RunScore s = scoreRun(frames);
+  EXPECT_NEAR(s.stick_precision, 2.0 / 4.0, 1e-12);
+  EXPECT_NEAR(s.stick_recall, 2.0 / 3.0, 1e-12);
+  EXPECT_EQ(s.excess_true_stick, -1);
+  // The truly sticking count is reported where a divergence starts.
+  for (auto& g : frames) g.raw.dx = 2.0;
+  frames[3].contact = true;
+  s = scoreRun(frames);
+  EXPECT_TRUE(s.diverged);
+  EXPECT_EQ(s.excess_true_stick, 3);
+}

@@ -1,7 +1,7 @@
 // The issue's accuracy figures end to end: simulator frames rendered at the
 // default image noise, through pipeline::FrameProcessor (corners, tracking,
 // triangulation, contact, stick/slip, pose) against the simulator's ground
-// truth. Press and slide_x at their 30 fps; roll and twist at 15 fps (the
+// truth. Press and slide_x at their 30 fps; roll, pitch and twist at 15 fps (the
 // same motion in half the frames, to keep the rendering time down).
 #include <gtest/gtest.h>
 
@@ -21,7 +21,7 @@ const RenderedReplay& rendered(const std::string& name) {
   static std::map<std::string, RenderedReplay> cache;
   auto it = cache.find(name);
   if (it == cache.end()) {
-    const double fps = name == "roll" || name == "twist" ? 15 : 0;
+    const double fps = name == "roll" || name == "pitch" || name == "twist" ? 15 : 0;
     it = cache.emplace(name, replayRendered(sampleScenario(name), fps)).first;
     const RenderedReplay& r = it->second;
     std::printf("%-8s %zu frames (%d lost), marker error RMS x %.5f y %.5f z %.5f mm\n", name.c_str(), r.frames.size(),
@@ -64,9 +64,10 @@ INSTANTIATE_TEST_SUITE_P(Pose, EndToEndTranslation, ::testing::Values("press", "
 
 class EndToEndRotation : public ::testing::TestWithParam<std::string> {};
 
-// Issue: rotation RMSE <= 1.0 deg per axis over yaw in [-15, 15], roll in [-40, 40] (0.5 mm depth).
+// Issue: rotation RMSE <= 1.0 deg per axis over yaw in [-15, 15], pitch and roll in [-40, 40] (0.5 mm
+// depth). Pitch pins the noise floor of the thresholds: with the rest jitter alone it froze at 34 deg.
 TEST_P(EndToEndRotation, RmseWithinWorkingRange) { expectRmse(GetParam(), inRotationRange, 3, 1.0); }
-INSTANTIATE_TEST_SUITE_P(Pose, EndToEndRotation, ::testing::Values("roll", "twist"));
+INSTANTIATE_TEST_SUITE_P(Pose, EndToEndRotation, ::testing::Values("roll", "pitch", "twist"));
 
 // Issue: sliding in x stays within 10% of the true displacement up to 3 mm
 // (with a 0.05 mm floor, the translation accuracy, for the first tenths).
