@@ -138,8 +138,15 @@ def check_loopback(c, digest_path):
         rows.append({"index": int(p[0]), "file": int(p[1]), "bytes": int(p[2]), "payload": p[3], "grey": p[4],
                      "decode_ms": float(p[5]), "same": p[6] == "1"})
     matched = [r for r in rows if r["file"] >= 0]
-    c.check([r["file"] for r in matched] == list(range(len(digest))),
-            f"every file arrived once and in order, byte for byte ({len(matched)} of {len(digest)})")
+    # v4l2loopback hands a reader that is faster than the producer the last
+    # frame again (seen under the sanitizers, where the producer is slow): an
+    # identical payload right after itself is a repeat, not a new frame.
+    repeats = sum(1 for a, b in zip(matched, matched[1:]) if a["file"] == b["file"] and a["payload"] == b["payload"])
+    fresh = [r for k, r in enumerate(matched)
+             if k == 0 or not (r["file"] == matched[k - 1]["file"] and r["payload"] == matched[k - 1]["payload"])]
+    c.check([r["file"] for r in fresh] == list(range(len(digest))),
+            f"every file arrived once and in order, byte for byte ({len(fresh)} of {len(digest)}, "
+            f"{repeats} repeated by the driver)")
     c.check(all(r["payload"] == digest[r["file"]][1] for r in matched), "payload hashes equal the files'")
     c.check(all(r["grey"] == digest[r["file"]][2] for r in matched),
             "every decoded frame equals the host folder source's frame of that file")
@@ -154,7 +161,7 @@ def check_loopback(c, digest_path):
     decode = [r["decode_ms"] for r in rows]
     after = frames_between(c.lines, "RECOVERED", "COUNTERS")
     skipped = [f["message"] for f in after if f["status"] == "skipped"]
-    print(f"FIGURES loopback: {len(matched)}/{len(digest)} MJPEG frames received; TurboJPEG decode 1920x1080 in the "
+    print(f"FIGURES loopback: {len(fresh)}/{len(digest)} MJPEG frames received ({repeats} repeats); TurboJPEG decode 1920x1080 in the "
           f"TCG guest median {statistics.median(decode) if decode else 0:.1f} ms (max {max(decode or [0]):.1f}); "
           f"error event {latency} ms after the producer left, first frame "
           f"{recovered[0] if recovered else '?'} ms after it returned; skipped after recovery: {skipped}")
