@@ -92,7 +92,7 @@ TEST(FailurePoints, TooFewPointsForEquation16UsesTheCentroid) {
 }
 
 TEST(FailurePoints, ASmallContactKeepsTurningWhenEquation16Fails) {
-  // pitch.yaml at 15 fps (2.7 deg per frame): at the +-40 deg extremes the
+  // pitch.yaml at 15 fps (1.8 deg per frame): at the +-40 deg extremes the
   // ellipsoid's contact holds ~9 markers, below min_macro_markers, and every
   // marker slips at the reversal. The translation-only fallback froze the
   // pitch there (27 deg off, RMSE 16.8 deg through rendered frames); the
