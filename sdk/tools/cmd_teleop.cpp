@@ -2,7 +2,8 @@
 // sensed vector over DDS (rt/<namespace>/haptic/sensed), renders it with the
 // kNN renderer in the 1 kHz loop and drives the 3-servo platform through its
 // Maestro (dds/operator_loop.hpp), retracting when the stream stops or goes
-// stale, until SIGINT/SIGTERM or --duration.
+// stale or DDS declares its publisher gone (liveliness lease), until
+// SIGINT/SIGTERM or --duration.
 #include <csignal>
 #include <cstdio>
 
@@ -53,12 +54,15 @@ int runTeleop(const Args& args) {
   g_loop = nullptr;
   platform.close();  // retracts
 
-  std::printf("received %llu sensed vectors (%llu refused), rendered %llu, %llu stalls, %llu commands; loop %s, "
-              "%.3f %% deadlines missed\n",
+  std::printf("received %llu sensed vectors (%llu refused), rendered %llu, %llu stalls (%llu: publisher gone), "
+              "%llu commands; loop %s, %.3f %% deadlines missed\n",
               static_cast<unsigned long long>(s.received), static_cast<unsigned long long>(s.refused),
               static_cast<unsigned long long>(s.rendered), static_cast<unsigned long long>(s.stalls),
-              static_cast<unsigned long long>(s.commands), haptics::toString(s.loop.policy).c_str(),
-              s.loop.missedPercent());
+              static_cast<unsigned long long>(s.writers_lost), static_cast<unsigned long long>(s.commands),
+              haptics::toString(s.loop.policy).c_str(), s.loop.missedPercent());
+  std::printf("sample arrival to device command: median %.3f ms, p99 %.3f ms, max %.3f ms (%lld samples)\n",
+              s.sample_to_command.median_ms, s.sample_to_command.p99_ms, s.sample_to_command.max_ms,
+              static_cast<long long>(s.sample_to_command.count));
   return 0;
 }
 

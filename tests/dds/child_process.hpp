@@ -1,7 +1,9 @@
 // tests/dds/child_process.hpp — one program run as a child process for the
 // DDS tests (publisher, subscriber, operator), through /bin/sh so it can be
-// prefixed with `ip netns exec NS`, stdout and stderr to a log file. A child
-// still running when the object goes out of scope is killed (SIGKILL) and reaped.
+// prefixed with `ip netns exec NS`, stdout and stderr to a log file; or a
+// function run in a forked copy of the test (call it before the test starts
+// threads or DDS). A child still running when the object goes out of scope is
+// killed (SIGKILL) and reaped.
 #pragma once
 
 #include <signal.h>
@@ -10,6 +12,7 @@
 
 #include <chrono>
 #include <fstream>
+#include <functional>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -26,10 +29,24 @@ class ChildProcess {
       ::_exit(127);
     }
   }
-  ~ChildProcess() {
+  // Runs body() in a forked child, which exits with its result (no log).
+  explicit ChildProcess(const std::function<int()>& body) {
+    pid_ = ::fork();
+    if (pid_ == 0) {
+      try {
+        ::_exit(body());
+      } catch (...) {
+        ::_exit(126);
+      }
+    }
+  }
+  ~ChildProcess() { kill(); }
+  // Ends the child at once, without a word to anyone (SIGKILL), and reaps it.
+  void kill() {
     if (pid_ > 0) {
       ::kill(pid_, SIGKILL);
       ::waitpid(pid_, nullptr, 0);
+      pid_ = -1;
     }
   }
   ChildProcess(const ChildProcess&) = delete;
@@ -45,9 +62,7 @@ class ChildProcess {
         return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
       }
       if (std::chrono::steady_clock::now() > deadline) {
-        ::kill(pid_, SIGKILL);
-        ::waitpid(pid_, nullptr, 0);
-        pid_ = -1;
+        kill();
         return -1;
       }
       std::this_thread::sleep_for(std::chrono::milliseconds(10));
@@ -55,6 +70,7 @@ class ChildProcess {
     return -1;
   }
   std::string log() const {
+    if (log_.empty()) return {};
     std::ifstream in(log_);
     std::stringstream s;
     s << in.rdbuf();

@@ -100,6 +100,18 @@ TEST(DdsNames, BadOptionsNameTheField) {
   o.interface = "no such interface";
   EXPECT_NE(inputErrorOf([&] { o.validate(); }).find("interface"), std::string::npos);
   o = {};
+  o.interface = "abcdefghijklmnop";  // 16 characters: Linux allows 15
+  EXPECT_NE(inputErrorOf([&] { o.validate(); }).find("abcdefghijklmnop"), std::string::npos);
+  o.interface = "veth-a.1@b_2345";  // 15 characters of the allowed set
+  EXPECT_NO_THROW(o.validate());
+  o = {};
+  o.ros_namespace = "/_robot/tip2";
+  EXPECT_NO_THROW(o.validate());
+  for (const char* bad : {"robot/2tip", "rob\xc3\xa9t", "robot/", "robot-left"}) {
+    o.ros_namespace = bad;
+    EXPECT_NE(inputErrorOf([&] { o.validate(); }).find(bad), std::string::npos) << bad;
+  }
+  o = {};
   o.interface = "nosuchif0";
   o.peers = {"127.0.0.1"};
   EXPECT_NE(inputErrorOf([&] { dds::Participant p(o); }).find("nosuchif0"), std::string::npos);

@@ -4,12 +4,13 @@
 // scenario: the 6-D input (Joy, PoseStamped), the markers (PointCloud2) and
 // the events, which are re-derived here from pose.csv. Over the loopback,
 // between two network namespaces joined by a veth pair, and over that pair
-// with 20 % of the data datagrams dropped by an nftables rule.
+// with half of the sends to the data ports refused by an nftables rule.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
 #include <Eigen/Geometry>
 #include <cmath>
+#include <numeric>
 #include <fstream>
 #include <map>
 #include <set>
@@ -75,6 +76,19 @@ std::set<std::pair<long, int>> expectedEvents(const std::map<int, PoseRow>& pose
   return e;
 }
 
+// The recorder under AddressSanitizer (.ci/run's sanitizer leg): Debian's Fast
+// DDS 2.9 is built with statistics, and deleting a reader frees the 64-byte
+// StatisticsReaderImpl through RTPSReader's 56-byte type inside libfastrtps
+// (RTPSParticipantImpl::deleteUserEndpoint), which ASan reports as a
+// new-delete-type-mismatch. That one check is turned off for the recorder
+// process only, never for onetip's processes; every other check stays on.
+std::string recorderAsanOptions() {
+  const char* current = std::getenv("ASAN_OPTIONS");
+  const std::string options = std::string(current ? current : "") + (current && *current ? ":" : "") +
+                              "new_delete_type_mismatch=0";
+  return "env ASAN_OPTIONS='" + options + "' ";
+}
+
 class RosInterop : public ::testing::Test {
  protected:
   void SetUp() override {
@@ -99,7 +113,7 @@ class RosInterop : public ::testing::Test {
     const std::string domain = std::to_string(1 + ::getpid() % 200);
     const std::string out = dir_.file("rx");
     std::filesystem::create_directories(out);
-    ChildProcess recorder(recorder_prefix + ROS_TOPIC_RECORDER + " --domain " + domain + " --namespace " + ns + " " +
+    ChildProcess recorder(recorder_prefix + recorderAsanOptions() + ROS_TOPIC_RECORDER + " --domain " + domain + " --namespace " + ns + " " +
                               recorder_net + " --out " + out + " --duration 120 --idle 3",
                           dir_.file("recorder.log"));
     ChildProcess publisher(publisher_prefix + ONETIP_CLI + " publish --input sim:" + kScenario + " --options " +
@@ -130,11 +144,12 @@ class RosInterop : public ::testing::Test {
     }
     std::printf("joy: %zu of %zu frames received\n", joy_frames.size(), frames);
     EXPECT_GE(static_cast<double>(joy_frames.size()), min_share * static_cast<double>(frames));
-    joy_received_ = joy_frames.size();
+    received_["joy"] = joy_frames.size();
 
     // PoseStamped: position (dx, dy, -dz) m, orientation R = Rz(yaw) Ry(roll) Rx(pitch).
     const auto pose = readCsv(out + "/pose.csv");
     EXPECT_GE(static_cast<double>(pose.size()), min_share * static_cast<double>(frames));
+    received_["pose"] = pose.size();
     for (const auto& r : pose) {
       const int f = frameOf(std::stod(r[0]));
       ASSERT_TRUE(pose_.count(f));
@@ -156,6 +171,7 @@ class RosInterop : public ::testing::Test {
       cloud[frameOf(std::stod(r[0]))][std::stoi(r[1])] = {std::stod(r[2]), std::stod(r[3]), std::stod(r[4])};
     std::printf("markers: %zu of %zu frames received\n", cloud.size(), frames);
     EXPECT_GE(static_cast<double>(cloud.size()), min_share * static_cast<double>(frames));
+    received_["markers"] = cloud.size();
     for (const auto& [f, ids] : cloud) {
       ASSERT_TRUE(markers_.count(f));
       ASSERT_EQ(ids.size(), markers_[f].size()) << "frame " << f;
@@ -182,11 +198,12 @@ class RosInterop : public ::testing::Test {
     // The haptic channel: the contact field at stride 4 (5 x 5 markers x 3).
     const auto sensed = readCsv(out + "/sensed.csv");
     EXPECT_GE(static_cast<double>(sensed.size()), min_share * static_cast<double>(frames));
+    received_["haptic/sensed"] = sensed.size();
     for (const auto& r : sensed) EXPECT_EQ(r[2], "75");
   }
 
   ScratchDir dir_{"onetip-dds"};
-  size_t joy_received_ = 0;
+  std::map<std::string, size_t> received_;  // samples per best-effort topic (one per frame sent)
   std::map<int, PoseRow> pose_;
   std::map<int, std::map<int, std::array<double, 3>>> markers_;
 };
@@ -203,19 +220,41 @@ TEST_F(RosInterop, FastDdsSubscriberInAnotherNetworkNamespaceGetsWhatProcessWrit
                     "--interface " + net.vethA() + " --peer " + net.addressB());
 }
 
-// 20 % of the data datagrams dropped on the way out of A (nftables; discovery
-// untouched): what arrives on the best-effort topics still equals pose.csv
-// (at least 60 % of the frames), and the reliable events all arrive, none lost.
-TEST_F(RosInterop, DroppedDatagramsLoseNoEventAndCorruptNoSample) {
+// Half of A's sends to the data ports refused (nftables, each send at random;
+// discovery untouched). A send refused in the output hook fails sendmsg() with
+// EPERM, and Cyclone DDS 0.10 tries each datagram up to three times
+// (ddsi_udp_conn_write), so a best-effort sample, one datagram each here, is
+// lost only when all three sends are refused: p^3 = 12.5 % of the samples, not
+// p = 50 %. Checked: the rule refused p of the sends and the four best-effort
+// topics lost p^3 of their samples (each within 4 binomial standard
+// deviations), every sample that arrived equals pose.csv / markers.csv, and
+// every event arrived (reliable: resent). docs/dds/README.md has the measurements.
+TEST_F(RosInterop, RefusedSendsLoseTheCubeOfTheDropRateAndNoEvent) {
+  constexpr double p = 0.5;
   VethNamespaces net;
   std::string why = net.create();
-  if (why.empty()) why = net.dropDataFromA(20);
+  if (why.empty()) why = net.dropDataFromA(static_cast<int>(p * 100));
   if (!why.empty()) GTEST_SKIP() << "cannot make a lossy link here: " << why;
+  // Per topic 121 samples, 15 expected lost, 4 sigma = 15: at least 75 % arrive.
   publishAndCompare(net.execInB(), "--address " + net.addressB() + " --peer " + net.addressA(), net.execInA(),
-                    "--interface " + net.vethA() + " --peer " + net.addressB(), 0.6);
-  const long dropped = net.droppedFromA();
-  std::printf("the drop rule dropped %ld datagrams; joy received %zu of %zu\n", dropped, joy_received_, pose_.size());
-  EXPECT_GT(dropped, 20) << "the drop rule dropped (almost) nothing";
+                    "--interface " + net.vethA() + " --peer " + net.addressB(), 0.75);
+
+  const VethNamespaces::DropCounts counts = net.dropCountsFromA();
+  ASSERT_GT(counts.sent, 100) << "the rule saw (almost) no data datagram";
+  const double sends = static_cast<double>(counts.sent);
+  const double refused = static_cast<double>(counts.dropped) / sends;
+  EXPECT_NEAR(refused, p, 4 * std::sqrt(p * (1 - p) / sends)) << "the rule does not refuse p of the sends";
+
+  ASSERT_EQ(received_.size(), 4u);
+  const double samples = 4.0 * static_cast<double>(pose_.size());  // one per frame and topic
+  const double arrived = static_cast<double>(
+      std::accumulate(received_.begin(), received_.end(), size_t{0}, [](size_t a, const auto& kv) { return a + kv.second; }));
+  const double q = p * p * p, lost = samples - arrived;
+  std::printf("the rule refused %ld of %ld sends (%.1f %%); best-effort samples lost %.0f of %.0f (%.1f %%, model p^3 = "
+              "%.1f %%)\n",
+              counts.dropped, counts.sent, 100 * refused, lost, samples, 100 * lost / samples, 100 * q);
+  EXPECT_NEAR(lost, samples * q, 4 * std::sqrt(samples * q * (1 - q)))
+      << "lost share of the best-effort samples is not p^3 (one datagram each, three sends)";
 }
 
 }  // namespace

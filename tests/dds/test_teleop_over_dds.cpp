@@ -6,11 +6,16 @@
 // the platform's safe range, must hold through the 50 ms stall, must be
 // retracted within the stale time (+ two driver periods) of the last sample,
 // stay at rest while the stream is cut, and come back from rest no faster than
-// the servos' speed limit, settling on what the kNN renderer gives.
+// the servos' speed limit, settling on what the kNN renderer gives. And a
+// publisher killed mid-run (SIGKILL: no goodbye on the wire) with the stale
+// time set long: DDS liveliness (the writer's 0.5 s lease) must retract the
+// platform within the lease, well before the stale timer would.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <array>
 #include <chrono>
+#include <cmath>
 #include <thread>
 
 #include "child_process.hpp"
@@ -42,29 +47,71 @@ size_t rowWithAngles(const haptics::TactileDataset& d, double lo, double hi) {
   return 0;
 }
 
-TEST(TeleopOverDds, StreamCutRetractsWithinTheStaleTimeAndResumesAtTheSpeedLimit) {
-  test_support::ScratchDir dir("onetip-teleop");
-  const haptics::PlatformKinematics kinematics;
-  const haptics::BiotacLikeSensor sensor;
-  const haptics::TactileDataset dataset = haptics::simulateDataset(kinematics, sensor, 9.0);
-  haptics::writeDatasetCsv(dataset, dir.file("dataset.csv"));
-  const haptics::KnnRenderer renderer(dataset);
-  const std::vector<double> a = rowOf(dataset, rowWithAngles(dataset, 90, 130));
-  const std::vector<double> b = rowOf(dataset, rowWithAngles(dataset, 140, 190));
-  const auto want_a = renderer.render(a.data(), 4).command, want_b = renderer.render(b.data(), 4).command;
+// The emulated Maestro's targets in degrees, one entry per driver period.
+struct Period {
+  Clock::time_point t;
+  std::array<double, 3> deg;
+};
+
+class TeleopOverDds : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    haptics::writeDatasetCsv(dataset_, dir_.file("dataset.csv"));
+    net_.domain = 1 + ::getpid() % 200;
+    net_.ros_namespace = "onetip_teleop_" + std::to_string(::getpid());
+    net_.interface = "lo";
+    net_.peers = {"127.0.0.1"};
+  }
+
+  std::string teleopCommand(const std::string& port, int stale_ms, double duration_s) const {
+    return std::string(ONETIP_CLI) + " teleop --dataset " + dir_.file("dataset.csv") + " --port " + port +
+           " --domain " + std::to_string(net_.domain) + " --namespace " + net_.ros_namespace +
+           " --interface lo --peer 127.0.0.1 --stale-ms " + std::to_string(stale_ms) + " --duration " +
+           std::to_string(duration_s);
+  }
+
+  static std::vector<Period> periodsOf(const devices::testing::MaestroEmulator& maestro) {
+    std::vector<Period> periods;
+    std::array<double, 3> deg{};
+    for (const auto& e : maestro.events(0x84)) {
+      EXPECT_TRUE(e.channel >= 0 && e.channel < 3) << "target for channel " << e.channel;
+      if (e.channel < 0 || e.channel >= 3) continue;
+      deg[static_cast<size_t>(e.channel)] =
+          options_.calibration[static_cast<size_t>(e.channel)].degreesFromQuarterMicroseconds(e.value);
+      if (e.channel == 2) periods.push_back({e.t, deg});
+    }
+    for (const auto& p : periods)  // the platform's safe range, [30, 195] deg
+      for (double d : p.deg) {
+        EXPECT_GE(d, 30.0 - kTol);
+        EXPECT_LE(d, 195.0 + kTol);
+      }
+    return periods;
+  }
+  static bool atRest(const Period& p) {
+    return std::abs(p.deg[0] - kRest) < kTol && std::abs(p.deg[1] - kRest) < kTol && std::abs(p.deg[2] - kRest) < kTol;
+  }
+  static bool near(const Period& p, const std::array<double, 3>& m) {
+    return std::abs(p.deg[0] - m[0]) < 0.1 && std::abs(p.deg[1] - m[1]) < 0.1 && std::abs(p.deg[2] - m[2]) < 0.1;
+  }
+
+  static constexpr double kRest = 30.0, kTol = 0.05;  // a quarter microsecond is ~0.02 deg
+  static inline const devices::ServoPlatformOptions options_{};
+  test_support::ScratchDir dir_{"onetip-teleop"};
+  const haptics::PlatformKinematics kinematics_;
+  const haptics::BiotacLikeSensor sensor_;
+  const haptics::TactileDataset dataset_ = haptics::simulateDataset(kinematics_, sensor_, 9.0);
+  const haptics::KnnRenderer renderer_{dataset_};
+  dds::DdsOptions net_;
+};
+
+TEST_F(TeleopOverDds, StreamCutRetractsWithinTheStaleTimeAndResumesAtTheSpeedLimit) {
+  const std::vector<double> a = rowOf(dataset_, rowWithAngles(dataset_, 90, 130));
+  const std::vector<double> b = rowOf(dataset_, rowWithAngles(dataset_, 140, 190));
+  const auto want_a = renderer_.render(a.data(), 4).command, want_b = renderer_.render(b.data(), 4).command;
 
   devices::testing::MaestroEmulator maestro;
-  dds::DdsOptions net;
-  net.domain = 1 + ::getpid() % 200;
-  net.ros_namespace = "onetip_teleop_" + std::to_string(::getpid());
-  net.interface = "lo";
-  net.peers = {"127.0.0.1"};
-  test_support::ChildProcess teleop(std::string(ONETIP_CLI) + " teleop --dataset " + dir.file("dataset.csv") +
-                                        " --port " + maestro.path() + " --domain " + std::to_string(net.domain) +
-                                        " --namespace " + net.ros_namespace +
-                                        " --interface lo --peer 127.0.0.1 --stale-ms 100 --duration 8",
-                                    dir.file("teleop.log"));
-  dds::Participant participant(net);
+  test_support::ChildProcess teleop(teleopCommand(maestro.path(), 100, 8), dir_.file("teleop.log"));
+  dds::Participant participant(net_);
   dds::SensedVectorPublisher publisher(participant, "biotac_like");
   const auto give_up = Clock::now() + std::chrono::seconds(20);
   while (publisher.matchedReaders() == 0 && Clock::now() < give_up) std::this_thread::sleep_for(std::chrono::milliseconds(10));
@@ -93,32 +140,8 @@ TEST(TeleopOverDds, StreamCutRetractsWithinTheStaleTimeAndResumesAtTheSpeedLimit
   std::printf("%s", teleop.log().c_str());
   EXPECT_TRUE(maestro.violations().empty());
 
-  // The targets the Maestro received, in degrees, per period (one per channel).
-  const devices::ServoPlatformOptions options;
-  struct Period {
-    Clock::time_point t;
-    std::array<double, 3> deg;
-  };
-  std::vector<Period> periods;
-  std::array<double, 3> deg{};
-  for (const auto& e : maestro.events(0x84)) {
-    ASSERT_GE(e.channel, 0);
-    ASSERT_LT(e.channel, 3);
-    deg[static_cast<size_t>(e.channel)] = options.calibration[static_cast<size_t>(e.channel)].degreesFromQuarterMicroseconds(e.value);
-    if (e.channel == 2) periods.push_back({e.t, deg});
-  }
+  const std::vector<Period> periods = periodsOf(maestro);
   ASSERT_GT(periods.size(), 100u);
-  const double rest = 30.0, tol = 0.05;  // a quarter microsecond is ~0.02 deg
-  for (const auto& p : periods)
-    for (double d : p.deg) {
-      EXPECT_GE(d, 30.0 - tol);
-      EXPECT_LE(d, 195.0 + tol);
-    }
-
-  auto atRest = [&](const Period& p) { return std::abs(p.deg[0] - rest) < tol && std::abs(p.deg[1] - rest) < tol && std::abs(p.deg[2] - rest) < tol; };
-  auto near = [&](const Period& p, const std::array<double, 3>& m) {
-    return std::abs(p.deg[0] - m[0]) < 0.1 && std::abs(p.deg[1] - m[1]) < 0.1 && std::abs(p.deg[2] - m[2]) < 0.1;
-  };
   // Before the cut: settled on the rendered command of A.
   const Period* before = nullptr;
   for (const auto& p : periods)
@@ -142,7 +165,7 @@ TEST(TeleopOverDds, StreamCutRetractsWithinTheStaleTimeAndResumesAtTheSpeedLimit
   ASSERT_NE(retracted, nullptr);
   const double retract_ms = std::chrono::duration<double, std::milli>(retracted->t - last_a).count();
   std::printf("retracted %.1f ms after the last sample (stale after 100 ms)\n", retract_ms);
-  EXPECT_LE(retract_ms, 100.0 + 2 * 1000.0 / options.rate_hz);
+  EXPECT_LE(retract_ms, 100.0 + 2 * 1000.0 / options_.rate_hz);
   for (const auto& p : periods)
     if (p.t > retracted->t && p.t < resume) {
       EXPECT_TRUE(atRest(p));
@@ -150,7 +173,16 @@ TEST(TeleopOverDds, StreamCutRetractsWithinTheStaleTimeAndResumesAtTheSpeedLimit
   // Resuming: from rest, every step within the speed limit while B streams,
   // settling on B's rendered command (after B the device retracts again: a
   // jump to rest is the one move allowed to be fast).
-  const double max_step = options.max_speed_deg_s / options.rate_hz;
+  // The response at the device, end to end: B's first sample published to the
+  // first target off rest the Maestro received (DDS, the loop's render and
+  // ramp, and the wait for the driver's next 20 ms period). Reported, not bounded.
+  for (const auto& p : periods)
+    if (p.t > resume && !atRest(p)) {
+      std::printf("first target off rest %.1f ms after the stream resumed\n",
+                  std::chrono::duration<double, std::milli>(p.t - resume).count());
+      break;
+    }
+  const double max_step = options_.max_speed_deg_s / options_.rate_hz;
   double largest = 0;
   const Period* prev = retracted;
   for (const auto& p : periods) {
@@ -159,11 +191,69 @@ TEST(TeleopOverDds, StreamCutRetractsWithinTheStaleTimeAndResumesAtTheSpeedLimit
     prev = &p;
   }
   std::printf("largest step after the cut %.2f deg (limit %.2f deg per %.0f ms period)\n", largest, max_step,
-              1000.0 / options.rate_hz);
-  EXPECT_LE(largest, max_step + tol);
+              1000.0 / options_.rate_hz);
+  EXPECT_LE(largest, max_step + kTol);
   EXPECT_TRUE(near(*prev, want_b)) << prev->deg[0] << " " << prev->deg[1] << " " << prev->deg[2] << " vs "
                                    << want_b[0] << " " << want_b[1] << " " << want_b[2];
   EXPECT_TRUE(atRest(periods.back()));  // the stream ended: retracted again
+}
+
+// The publisher is a forked copy of this test publishing A at 100 Hz until it
+// is killed with SIGKILL; `onetip teleop` runs with a 2 s stale time, so only
+// DDS liveliness (the writer's lease, 0.5 s) can retract it within a second.
+TEST_F(TeleopOverDds, KilledPublisherIsNoticedWithinTheLivelinessLease) {
+  const std::vector<double> a = rowOf(dataset_, rowWithAngles(dataset_, 90, 130));
+  const auto want_a = renderer_.render(a.data(), 4).command;
+  const dds::StreamQos qos;  // the writer's lease: qos.lease_s
+  test_support::ChildProcess publisher([&] {  // no DDS in this process before the fork
+    dds::Participant participant(net_);
+    dds::SensedVectorPublisher writer(participant, "biotac_like", qos);
+    for (auto next = Clock::now();; next += std::chrono::milliseconds(10)) {
+      writer.publish(std::chrono::duration<double>(Clock::now().time_since_epoch()).count(), a);
+      std::this_thread::sleep_until(next);
+    }
+    return 0;
+  });
+  devices::testing::MaestroEmulator maestro;
+  const double stale_s = 2.0;
+  test_support::ChildProcess teleop(teleopCommand(maestro.path(), static_cast<int>(stale_s * 1e3), 6),
+                                    dir_.file("teleop.log"));
+
+  // Kill the publisher once the platform has held A's command for 0.3 s.
+  const auto give_up = Clock::now() + std::chrono::seconds(20);
+  auto settled = [&] {
+    const auto periods = periodsOf(maestro);
+    return !periods.empty() && near(periods.back(), want_a);
+  };
+  while (!settled() && Clock::now() < give_up) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  ASSERT_TRUE(settled()) << "the platform never settled on A's command\n" << teleop.log();
+  const Clock::time_point settled_at = Clock::now();
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  publisher.kill();
+  const Clock::time_point killed = Clock::now();
+  ASSERT_EQ(teleop.wait(30), 0) << teleop.log();
+  std::printf("%s", teleop.log().c_str());
+  EXPECT_NE(teleop.log().find("(1: publisher gone)"), std::string::npos) << "teleop did not report the lost writer";
+
+  const std::vector<Period> periods = periodsOf(maestro);
+  const Period* retracted = nullptr;
+  for (const auto& p : periods) {
+    if (p.t <= killed) {
+      if (p.t > settled_at) {
+        EXPECT_TRUE(near(p, want_a)) << "did not hold A's command while it streamed";
+      }
+      continue;
+    }
+    if (!retracted && atRest(p)) retracted = &p;
+    if (retracted) {
+      EXPECT_TRUE(atRest(p)) << "moved again after retracting, with no publisher";
+    }
+  }
+  ASSERT_NE(retracted, nullptr);
+  const double retract_s = std::chrono::duration<double>(retracted->t - killed).count();
+  std::printf("retracted %.1f ms after the publisher was killed (lease %.0f ms, stale time %.0f ms)\n",
+              retract_s * 1e3, qos.lease_s * 1e3, stale_s * 1e3);
+  EXPECT_LE(retract_s, qos.lease_s + 0.1) << "within the lease + 100 ms (the lease check and two driver periods)";
 }
 
 }  // namespace

@@ -50,20 +50,25 @@ std::string VethNamespaces::dropDataFromA(int percent) {
   if (sh(nft + "add table inet onetip_loss") != 0) return "cannot add an nftables table (is nftables installed?)";
   const bool ok =
       sh(nft + "'add chain inet onetip_loss out { type filter hook output priority 0; }'") == 0 &&
+      sh(nft + "'add rule inet onetip_loss out udp dport & 1 == 1 counter'") == 0 &&
       sh(nft + "'add rule inet onetip_loss out udp dport & 1 == 1 numgen random mod 100 < " + std::to_string(percent) +
          " counter drop'") == 0;
   return ok ? std::string() : "cannot add the nftables drop rule";
 }
 
-long VethNamespaces::droppedFromA() const {
+VethNamespaces::DropCounts VethNamespaces::dropCountsFromA() const {
   FILE* p = ::popen(("ip netns exec " + ns_a_ + " nft list chain inet onetip_loss out 2>/dev/null").c_str(), "r");
-  if (!p) return -1;
+  if (!p) return {};
   std::string text;
   char buf[512];
   while (std::fgets(buf, sizeof buf, p)) text += buf;
   ::pclose(p);
-  const size_t at = text.find("counter packets ");
-  return at == std::string::npos ? -1 : std::stol(text.substr(at + 16));
+  // The chain lists the counting rule, then the dropping rule.
+  const std::string key = "counter packets ";
+  const size_t first = text.find(key);
+  const size_t second = first == std::string::npos ? first : text.find(key, first + key.size());
+  if (second == std::string::npos) return {};
+  return {std::stol(text.substr(first + key.size())), std::stol(text.substr(second + key.size()))};
 }
 
 VethNamespaces::~VethNamespaces() {

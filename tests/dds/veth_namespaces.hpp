@@ -19,13 +19,21 @@ class VethNamespaces {
   VethNamespaces& operator=(const VethNamespaces&) = delete;
 
   std::string create();
-  // Drops `percent` % of the UDP datagrams A sends to odd ports, at random
-  // (nftables in A). RTPS puts user data on odd ports (7400 + 250 d + 11 + 2 i)
-  // and discovery on even ones, so discovery is untouched and data is lost.
+  // Drops `percent` % of the UDP datagrams A sends to odd ports, each send
+  // decided at random (nftables in A, output hook). RTPS puts user data on odd
+  // ports (7400 + 250 d + 11 + 2 i) and discovery on even ones, so discovery
+  // is untouched and data is lost. A datagram dropped there fails the sender's
+  // sendmsg() with EPERM, which Cyclone DDS 0.10 retries twice: see
+  // docs/dds/README.md for what that does to the loss rate.
   // Empty on success, else why not (no nft).
   std::string dropDataFromA(int percent);
-  // Datagrams that rule has dropped so far (-1 when it cannot be read).
-  long droppedFromA() const;
+  // What the rule saw so far: datagrams A tried to send to odd ports (every
+  // attempt, retries included) and how many of them it dropped (-1, -1 when
+  // the counters cannot be read).
+  struct DropCounts {
+    long sent = -1, dropped = -1;
+  };
+  DropCounts dropCountsFromA() const;
   // "ip netns exec <ns> " prefixes for a command line.
   std::string execInA() const { return "ip netns exec " + ns_a_ + " "; }
   std::string execInB() const { return "ip netns exec " + ns_b_ + " "; }

@@ -18,6 +18,7 @@ void ContactAnalyzerOptions::validate() const {
     throw InputError("contact options: region_fraction must be in (0, 1]");
   if (min_region_markers < 1) throw InputError("contact options: min_region_markers must be at least 1");
   if (min_valid_markers < 3) throw InputError("contact options: min_valid_markers must be at least 3");
+  if (!(min_confidence >= 0 && min_confidence <= 1)) throw InputError("contact options: min_confidence must be in [0, 1]");
 }
 
 ContactAnalyzer::ContactAnalyzer(ContactAnalyzerOptions options) : options_(options) { options_.validate(); }
@@ -27,7 +28,8 @@ namespace {
 void checkSameGrid(const MarkerField& now, const MarkerField& rest) {
   auto consistent = [](const MarkerField& f) {
     return f.rows > 0 && f.cols > 0 && f.position.size() == static_cast<size_t>(f.size()) &&
-           f.valid.size() == static_cast<size_t>(f.size());
+           f.valid.size() == static_cast<size_t>(f.size()) &&
+           (f.confidence.empty() || f.confidence.size() == static_cast<size_t>(f.size()));
   };
   if (!consistent(now)) throw InputError("contact analysis: current marker field is empty or inconsistent");
   if (!consistent(rest)) throw InputError("contact analysis: rest marker field is empty or inconsistent");
@@ -45,9 +47,17 @@ ContactField ContactAnalyzer::analyze(const MarkerField& now, const MarkerField&
   ContactField out;
   out.displacement.assign(n, Eigen::Vector3d::Zero());
   out.valid.assign(n, 0);
+  out.confidence.assign(n, 0.0f);
+  out.min_confidence = options_.min_confidence;
   out.region_of.assign(n, -1);
   for (size_t i = 0; i < n; ++i) {
-    if (!now.valid[i] || !rest.valid[i]) continue;
+    if (!now.valid[i]) continue;
+    out.confidence[i] = now.confidence.empty() ? 1.0f : now.confidence[i];
+    if (!(out.confidence[i] >= out.min_confidence)) {
+      ++out.low_confidence;
+      continue;
+    }
+    if (!rest.valid[i]) continue;
     const Eigen::Vector3d u = now.position[i] - rest.position[i];
     if (!u.allFinite()) continue;
     out.valid[i] = 1;
@@ -56,7 +66,7 @@ ContactField ContactAnalyzer::analyze(const MarkerField& now, const MarkerField&
     out.max_modulus_mm = std::max(out.max_modulus_mm, u.norm());
     out.max_normal_mm = std::max(out.max_normal_mm, std::abs(u.z()));
   }
-  gridSurfaceNormals(now, out.normal, out.normal_valid);
+  gridSurfaceNormals(out.low_confidence > 0 ? trustedMarkers(now, out) : now, out.normal, out.normal_valid);
   if (out.valid_markers < options_.min_valid_markers) {
     out.status = ContactFieldStatus::too_few_markers;
     return out;
@@ -95,6 +105,13 @@ ContactField ContactAnalyzer::analyze(const MarkerField& now, const MarkerField&
     out.regions.push_back(std::move(reg));
   }
   out.in_contact = !out.regions.empty();
+  return out;
+}
+
+MarkerField trustedMarkers(const MarkerField& now, const ContactField& field) {
+  MarkerField out = now;
+  for (size_t i = 0; i < out.valid.size() && i < field.confidence.size(); ++i)
+    if (!(field.confidence[i] >= field.min_confidence)) out.valid[i] = 0;
   return out;
 }
 

@@ -6,6 +6,17 @@
 // markers with |u_i| >= region_fraction * max |u_i.z| (paper: 50%), split into
 // 8-connected components on the grid; components smaller than
 // min_region_markers are treated as noise and dropped.
+// Confidence: a marker of `now` whose confidence is below min_confidence is
+// treated as not measured for the frame (ContactField::valid = 0). The
+// default 0.2 follows the grid tracker's own tolerance (vision/grid_tracker.hpp:
+// confidence = (1 - residual / tolerance) x good-link fraction, tolerance
+// 0.3 of a square): with every link good, a marker more than 0.8 x the
+// tolerance (0.24 of a square) from where its neighbours' motion puts it;
+// or one with half its links bad and more than 0.6 x the tolerance off.
+// Producers that do not grade (confidence 1) are unaffected.
+// trustedMarkers(now, field): `now` with its markers graded below the field's
+// min_confidence made invalid, so the stages after contact (stick/slip, pose)
+// treat them as not measured too (remembered, not forgotten).
 #pragma once
 
 #include <cstdint>
@@ -29,6 +40,7 @@ struct ContactAnalyzerOptions {
   double region_fraction = 0.4;       // of the largest normal deformation
   int min_region_markers = 2;         // smaller components are noise
   int min_valid_markers = 9;          // fewer valid pairs: status too_few_markers
+  double min_confidence = 0.2;        // a marker graded below this is not measured (0: use every marker)
   void validate() const;              // throws InputError naming the bad field
 };
 
@@ -42,5 +54,8 @@ class ContactAnalyzer {
  private:
   ContactAnalyzerOptions options_;
 };
+
+// `now` without the markers `field` graded below its min_confidence (see above).
+MarkerField trustedMarkers(const MarkerField& now, const ContactField& field);
 
 }  // namespace onetip::contact

@@ -5,6 +5,10 @@
 //   normal deformation n_i = -u_i.z (mm, positive when pressed into the pad);
 //   the outward surface normal of the deformed marker layer (unit, S, pointing
 //   out of the pad towards the finger), from grid neighbours.
+// A marker measured with a confidence (MarkerField::confidence, 0..1) below
+// the analyzer's min_confidence is treated as not measured for the frame:
+// invalid here, so no region, centroid or pose fit uses it (trustedMarkers
+// gives the stages after contact the same view of `now`).
 // Contact (the paper's Sec. III-C rule): in contact while max_i |u_i| exceeds
 // the contact threshold; the contact region holds the markers whose
 // deformation (normal -u_i.z by default, or the paper's modulus |u_i|) is at
@@ -36,9 +40,12 @@ struct ContactField {
   double max_modulus_mm = 0;            // max |u_i|
   double max_normal_mm = 0;             // max |u_i.z|
   double region_cut_mm = 0;             // region_fraction * max_normal_mm
-  int valid_markers = 0;                // markers valid in both now and rest
+  int valid_markers = 0;                // markers valid in both now and rest (and confident enough)
+  int low_confidence = 0;               // markers measured in now but graded below min_confidence
   std::vector<Eigen::Vector3d> displacement;  // u_i (zero where invalid)
-  std::vector<std::uint8_t> valid;            // now and rest both valid
+  std::vector<std::uint8_t> valid;            // now and rest both valid, confidence >= min_confidence
+  std::vector<float> confidence;              // now's confidence where now is valid, 0 elsewhere
+  double min_confidence = 0;            // the analyzer's cut: now-valid markers below it are not measured
   std::vector<Eigen::Vector3d> normal;        // deformed surface normal (S)
   std::vector<std::uint8_t> normal_valid;
   std::vector<int> region_of;           // index into regions, -1 outside every region

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "core/error.hpp"
 
@@ -22,6 +23,7 @@ void StickSlipClassifier::setOptions(const StickSlipOptions& options) {
 
 void StickSlipClassifier::reset(int marker_count) {
   label_.assign(static_cast<size_t>(marker_count), MarkerLabel::outside);
+  unseen_label_.assign(static_cast<size_t>(marker_count), MarkerLabel::outside);
   anchor_.assign(static_cast<size_t>(marker_count), Eigen::Vector3d::Zero());
   quiet_frames_.assign(static_cast<size_t>(marker_count), 0);
 }
@@ -30,8 +32,12 @@ void StickSlipClassifier::retain(const std::vector<int>& members, const MarkerFi
   std::vector<std::uint8_t> keep(label_.size(), 0);
   for (int id : members)
     if (now.valid[static_cast<size_t>(id)]) keep[static_cast<size_t>(id)] = 1;
-  for (size_t i = 0; i < label_.size(); ++i)
-    if (!keep[i]) label_[i] = MarkerLabel::outside;
+  for (size_t i = 0; i < label_.size(); ++i) {
+    if (keep[i]) continue;
+    if (now.valid[i]) unseen_label_[i] = MarkerLabel::outside;          // measured outside: forgotten
+    else if (label_[i] != MarkerLabel::outside) unseen_label_[i] = label_[i];  // not measured: remembered
+    label_[i] = MarkerLabel::outside;
+  }
 }
 
 void StickSlipClassifier::reanchor(int id, const MarkerField& now, const Eigen::Isometry3d& pose_inverse) {
@@ -45,6 +51,10 @@ void StickSlipClassifier::anchorNew(const std::vector<int>& members, const Marke
   for (int id : members) {
     const size_t i = static_cast<size_t>(id);
     if (!now.valid[i] || label_[i] != MarkerLabel::outside) continue;
+    if (unseen_label_[i] != MarkerLabel::outside) {  // back after frames unmeasured: judged on its old anchor
+      label_[i] = std::exchange(unseen_label_[i], MarkerLabel::outside);
+      continue;
+    }
     label_[i] = MarkerLabel::stick;
     reanchor(id, now, inv);
   }

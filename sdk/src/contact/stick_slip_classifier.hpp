@@ -46,9 +46,14 @@ class StickSlipClassifier {
   // Forgets every marker; sizes the tables for `marker_count` markers.
   void reset(int marker_count);
   // Markers of `members` that are valid in `now` keep their state; every other
-  // marker is forgotten (label outside).
+  // marker gets the label outside. One that was merely not measured this frame
+  // (invalid in `now`) is remembered: anchorNew gives it back its label and
+  // anchor when it is seen again, so a marker lost for a frame during slip does
+  // not return as a fresh, trusted stick marker. One measured outside the
+  // region is forgotten.
   void retain(const std::vector<int>& members, const MarkerField& now);
-  // Anchors the valid members that have no anchor yet at pose^-1 p (label stick).
+  // Anchors the valid members that have no anchor yet at pose^-1 p (label stick);
+  // a remembered marker (see retain) takes back its label and anchor instead.
   void anchorNew(const std::vector<int>& members, const MarkerField& now, const Eigen::Isometry3d& pose);
   // Labels every anchored marker from its drift under `pose`; returns how many
   // markers changed label.
@@ -68,6 +73,7 @@ class StickSlipClassifier {
 
   StickSlipOptions options_;
   std::vector<MarkerLabel> label_;
+  std::vector<MarkerLabel> unseen_label_;  // label when last measured, for a member not measured since
   std::vector<Eigen::Vector3d> anchor_;
   std::vector<int> quiet_frames_;
 };

@@ -1,5 +1,6 @@
 #include "dds/operator_loop.hpp"
 
+#include <array>
 #include <cmath>
 #include <optional>
 #include <string>
@@ -50,6 +51,8 @@ OperatorLoopStats OperatorLoop::run(double duration_s) {
   bool stale = true;  // no sample yet
   std::optional<haptics::CommandRamp> ramp;
   SensedSample sample;
+  std::array<Clock::time_point, 64> arrived{};  // arrival of submission k at [k % 64]
+  pipeline::TimingStats response({"sample_to_command"}, 10000);
 
   const long ticks = duration_s > 0 ? std::lround(duration_s * options_.rate_hz) : -1;
   stats.loop = loop_.run(ticks, [&](long) {
@@ -63,14 +66,19 @@ OperatorLoopStats OperatorLoop::run(double duration_s) {
         worker.submit(sample.values.data());
         ++submitted;
         last_arrival = sample.received;
+        arrived[submitted % arrived.size()] = sample.received;
       }
     }
     stats.received += input_.received() - before;
-    if (submitted == 0 || Clock::now() - last_arrival > stale_after) {
+    const bool timed_out = Clock::now() - last_arrival > stale_after;
+    const bool writer_gone = !stale && input_.aliveWriters() == 0;
+    if (submitted == 0 || timed_out || writer_gone) {
       if (!stale) {
-        device_.reportInputError("the remote sensed stream is stale (no sample for " +
-                                 std::to_string(options_.stale_s) + " s)");
+        device_.reportInputError(timed_out ? "the remote sensed stream is stale (no sample for " +
+                                                 std::to_string(options_.stale_s) + " s)"
+                                           : std::string("the remote sensed stream's publisher is gone (DDS liveliness lost)"));
         ++stats.stalls;
+        if (!timed_out) ++stats.writers_lost;
         stale = true;
         resume_from = submitted + 1;
         ramp.reset();
@@ -82,6 +90,8 @@ OperatorLoopStats OperatorLoop::run(double duration_s) {
       if (!ramp) ramp.emplace(c.command, options_.ramp_ticks);
       else ramp->target(c.command);
       stale = false;
+      if (submitted - c.sequence < arrived.size())  // its arrival time is still in the ring
+        response.add(0, std::chrono::duration<double, std::milli>(Clock::now() - arrived[c.sequence % arrived.size()]).count());
     }
     if (!ramp) return;  // waiting for a command rendered after the stall
     const std::array<double, 3>& m = ramp->step();
@@ -89,6 +99,7 @@ OperatorLoopStats OperatorLoop::run(double duration_s) {
     ++stats.commands;
   });
   stats.rendered = worker.rendered();
+  stats.sample_to_command = response.summary().front();
   return stats;
 }
 

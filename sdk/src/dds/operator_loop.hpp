@@ -7,16 +7,23 @@
 //   1. take the newest sensed sample, if any; a vector whose size is not the
 //      renderer's channel count is refused (input error: the device retracts);
 //   2. stale = no sample yet, or the newest arrived more than stale_s ago
-//      (steady clock). On becoming stale: device.reportInputError() (the
-//      driver retracts at once and holds rest) and nothing more is commanded;
+//      (steady clock), or no writer of the stream is alive any more: DDS
+//      liveliness, which drops at once when the publisher deletes its writer
+//      and within the writer's lease (0.5 s, stream_qos.hpp) when the
+//      publishing process dies without a word (SIGKILL, power, cable).
+//      On becoming stale: device.reportInputError() (the driver retracts at
+//      once and holds rest) and nothing more is commanded;
 //   3. otherwise the newest rendered command becomes the target of a linear
 //      ramp over ramp_ticks ticks (haptics/command_ramp.hpp), and the ramp's
 //      value is commanded every tick. After a stall the loop waits for a
 //      command rendered from a sample that arrived after it, and the ramp
 //      starts there; the driver's output gate then moves from rest at the
 //      device's speed limit (no jump).
-// So the device retracts within stale_s + one tick + the driver's own period
-// after the last sample, whether the stream stops, stalls or the publisher dies.
+// So the device retracts within min(stale_s, the time DDS takes to declare the
+// writer gone) + one tick + the driver's own period after the last sample,
+// whether the stream stops, stalls or the publisher dies. The stale timer alone
+// covers a dead publisher too; liveliness matters when stale_s is set long
+// (a slow sensor) and tells the two causes apart in stats and in the error.
 #pragma once
 
 #include <atomic>
@@ -26,6 +33,7 @@
 #include "devices/cutaneous_device.hpp"
 #include "haptics/knn_renderer.hpp"
 #include "haptics/periodic_loop.hpp"
+#include "pipeline/timing_stats.hpp"
 
 namespace onetip::dds {
 
@@ -42,8 +50,16 @@ struct OperatorLoopStats {
   std::uint64_t received = 0;        // sensed samples taken from DDS
   std::uint64_t refused = 0;         // of the wrong size
   std::uint64_t rendered = 0;
-  std::uint64_t stalls = 0;          // times the stream went stale
+  std::uint64_t stalls = 0;          // times the stream went stale (either cause)
+  std::uint64_t writers_lost = 0;    // of those, times because no writer was alive any more
   std::uint64_t commands = 0;        // goals given to the device
+  // Response at the operator's device: from a sample's arrival (the tick that
+  // took it from DDS) to the first goal given to the device that ramps towards
+  // its rendered command (ms; the kNN query on the worker thread and the wait
+  // for the next tick). Order statistics of the last 10,000 rendered samples.
+  // The ramp then takes ramp_ticks ticks to reach it, and the device's driver
+  // sends it within its own period (the servo platform: 20 ms).
+  pipeline::StageSummary sample_to_command;
   haptics::PeriodicLoopResult loop;
 };
 

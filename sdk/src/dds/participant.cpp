@@ -2,7 +2,7 @@
 
 #include <arpa/inet.h>
 
-#include <regex>
+#include <algorithm>
 #include <stdexcept>
 
 #include "core/error.hpp"
@@ -10,7 +10,21 @@
 namespace onetip::dds {
 namespace {
 
-const std::regex kToken("[A-Za-z_][A-Za-z0-9_]*");
+bool isAsciiAlpha(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z'); }
+bool isAsciiDigit(char c) { return c >= '0' && c <= '9'; }
+
+// [A-Za-z_][A-Za-z0-9_]*
+bool isRosToken(const std::string& t) {
+  return !t.empty() && (isAsciiAlpha(t[0]) || t[0] == '_') &&
+         std::all_of(t.begin(), t.end(), [](char c) { return isAsciiAlpha(c) || isAsciiDigit(c) || c == '_'; });
+}
+
+// [A-Za-z0-9_.@-]{1,15} (Linux interface names are at most 15 characters)
+bool isInterfaceName(const std::string& n) {
+  return !n.empty() && n.size() <= 15 && std::all_of(n.begin(), n.end(), [](char c) {
+    return isAsciiAlpha(c) || isAsciiDigit(c) || c == '_' || c == '.' || c == '@' || c == '-';
+  });
+}
 
 bool isRosName(const std::string& name) {
   if (name.empty()) return false;
@@ -18,7 +32,7 @@ bool isRosName(const std::string& name) {
   for (;;) {
     const size_t slash = name.find('/', start);
     const std::string token = name.substr(start, slash == std::string::npos ? std::string::npos : slash - start);
-    if (!std::regex_match(token, kToken)) return false;
+    if (!isRosToken(token)) return false;
     if (slash == std::string::npos) return true;
     start = slash + 1;
   }
@@ -32,7 +46,7 @@ void DdsOptions::validate() const {
   if (domain < 0 || domain > 232) throw InputError("dds domain " + std::to_string(domain) + ": must be 0 .. 232");
   if (!isRosName(stripLeadingSlash(ros_namespace)))
     throw InputError("dds namespace '" + ros_namespace + "': not a ROS name (tokens [A-Za-z_][A-Za-z0-9_]* joined by '/')");
-  if (!interface.empty() && !std::regex_match(interface, std::regex("[A-Za-z0-9_.@-]{1,15}")))
+  if (!interface.empty() && !isInterfaceName(interface))
     throw InputError("dds interface '" + interface + "': not a network interface name");
   for (const std::string& p : peers) {
     in_addr addr{};

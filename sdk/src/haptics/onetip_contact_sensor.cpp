@@ -37,7 +37,7 @@ struct OnetipContactSensor::Impl {
   sim::ContactModel model;
   double apex_z;
   Impl(const OnetipSensorOptions& o, const sim::IndenterGeometry& plate)
-      : lattice(o.pad), model(lattice, {plate}), apex_z(o.pad.marker_depth_mm) {}
+      : lattice(o.pad), model(lattice, {plate}), apex_z(o.pad.pattern.marker_depth_mm) {}
 };
 
 OnetipContactSensor::OnetipContactSensor(const OnetipSensorOptions& options) : options_(options) {

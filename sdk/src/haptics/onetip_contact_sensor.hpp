@@ -7,7 +7,7 @@
 // (platform_kinematics.hpp: z up into the finger, the pad's apex touching
 // z = 0 from above, the plate's normal n pointing up into the pad). The pad
 // looks the other way in its own frame P (= S, pad_z up out of the skin,
-// apex at z = marker_depth_mm), so D is turned 180 deg about x:
+// apex at z = pattern.marker_depth_mm), so D is turned 180 deg about x:
 //     X_P = Rx(180) X_D + (0, 0, apex),   Rx(180) = diag(1, -1, -1)
 // i.e. x_P = x_D, y_P = -y_D (the finger's tip, +y_D, is -y_P), z_P = apex - z_D.
 // The plate's face in P is the plane through c_P with normal n_P = Rx(180) n

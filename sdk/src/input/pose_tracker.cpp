@@ -17,6 +17,7 @@ void PoseTrackerOptions::validate() const {
   press.validate();
   for (double r : working_range) requireAbove("pose tracker: working_range entries", r, 0);
   requireAtLeast("pose tracker: clamp_factor", clamp_factor, 1);
+  requireInRange("pose tracker: marker_depth_mm", marker_depth_mm, 0, 10);
 }
 
 PoseTracker::PoseTracker(PoseTrackerOptions options)
@@ -78,7 +79,7 @@ TrackerResult PoseTracker::update(const MarkerField& now_S, const MarkerField& r
   r.contact = r.step.active;
   r.state = r.step.state;
   if (r.step.onset) {
-    accumulator_.reset(r.step.onset_centroid);
+    accumulator_.reset(r.step.onset_centroid, options_.marker_depth_mm);
     if (filter_) filter_->reset();
   } else if (r.step.active) {
     accumulator_.add(r.step.increment);

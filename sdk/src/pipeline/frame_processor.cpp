@@ -100,6 +100,7 @@ FrameProcessor::FrameProcessor(const StereoCalibration& calib, const MarkerPatte
                                FrameProcessorOptions options) {
   calib.validate();
   pattern.validate();
+  options.pose.marker_depth_mm = pattern.marker_depth_mm;  // the pad's, whatever the options said
   options.validate();
   if (options.min_markers > pattern.count())
     throw InputError("frame processor: min_markers: " + std::to_string(options.min_markers) + " is more than the " +

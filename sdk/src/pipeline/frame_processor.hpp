@@ -33,7 +33,7 @@ struct FrameProcessorOptions {
   vision::CornerDetectorOptions detector;
   vision::GridTrackerOptions tracker;
   vision::TriangulatorOptions triangulator;
-  input::PoseTrackerOptions pose;
+  input::PoseTrackerOptions pose;  // its marker_depth_mm is the pattern's (set by the constructor)
   int min_markers = 12;  // fewer triangulated markers: the frame is "lost" (no pose update)
   void validate() const;  // throws InputError naming the bad field
 };

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "contact/contact_analyzer.hpp"
 #include "contact/footprint_centre.hpp"
 #include "core/rotation.hpp"
 #include "pose/anchored_fit.hpp"
@@ -123,6 +124,9 @@ Eigen::Isometry3d AdaptivePoseEstimator::solveIncrement(const contact::ContactFi
   evidence.rotation_supported = af.rotation_supported;
   evidence.n_stick = static_cast<int>(stick.size());
   evidence.n_slip = static_cast<int>(slip.size());
+  evidence.slip_fixes_rotation = !af.rotation_supported && !slip.empty() &&
+                                 evidence.n_stick >= options_.min_thin_stick_markers &&
+                                 stickSlipRotationInformation(stick, slip) >= t_.min_spread_mm * t_.min_spread_mm;
   step.model = selectModel(evidence, policy);
   if (step.model == PoseModel::kabsch) return af.fit.motion;
   if (step.model == PoseModel::stick_slip) {
@@ -283,12 +287,16 @@ Eigen::Isometry3d AdaptivePoseEstimator::limitStep(const Eigen::Isometry3d& incr
   return out;
 }
 
-PoseStep AdaptivePoseEstimator::update(const contact::ContactField& field, const MarkerField& now,
+PoseStep AdaptivePoseEstimator::update(const contact::ContactField& field, const MarkerField& measured,
                                        const SensorSelf& self) {
   if (!field.in_contact || field.status != contact::ContactFieldStatus::ok) {
     reset();
     return {};
   }
+  // Markers the contact stage graded below its confidence cut are not
+  // measured this frame (contact_analyzer.hpp): no fit, label or anchor uses them.
+  const MarkerField trusted = field.low_confidence > 0 ? contact::trustedMarkers(measured, field) : MarkerField{};
+  const MarkerField& now = field.low_confidence > 0 ? trusted : measured;
   t_ = deriveThresholds(options_, self);
   classifier_.setOptions({t_.slip_mm, t_.stick_hold_frames});
   if (!active_) {

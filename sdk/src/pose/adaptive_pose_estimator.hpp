@@ -81,6 +81,8 @@ class AdaptivePoseEstimator {
   void reset();
   // `field` from ContactAnalyzer::analyze(now_S, rest_S); `self` what the
   // sensor has measured about itself so far (noise, pitch, frame interval).
+  // Markers of now_S graded below field.min_confidence are treated as not
+  // measured (contact::trustedMarkers).
   PoseStep update(const contact::ContactField& field, const MarkerField& now_S, const SensorSelf& self);
   const contact::StickSlipClassifier& classifier() const { return classifier_; }
   const AdaptivePoseOptions& options() const { return options_; }

@@ -49,6 +49,11 @@ struct AdaptivePoseOptions {
   double stick_hold_s = 0.33;                 // [0.001, 10] s
   int stick_hold_min_frames = 10;             // [1, 1000] quiet measurements, whatever the frame rate
   int min_macro_markers = 15;                 // [1, 10000] smaller regions never declare macroscopic slip
+  // [1, 10000] a stick set that fixes no general rotation alone gets Eq. 13-15 (the slip markers' normal
+  // residuals fix the rest) only with this many markers: the last 2-3 stuck markers as gross slip
+  // begins are often creeping, and trusting them as the stick half of Ceres hides the slide (3 delays
+  // gross slip in the macro-slip test; 300-run campaign: 232 diverged at 4 against 241 without the rule).
+  int min_thin_stick_markers = 4;
   double macro_window_s = 0.16;               // [0.01, 2] s
   double macro_drift_pitches = 0.067;         // [0.001, 2]
   double macro_drift_ratio = 0.35;            // [0.05, 0.95] of the footprint's own travel

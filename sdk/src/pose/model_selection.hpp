@@ -5,7 +5,8 @@
 //   no usable stick fit, or Eq. 16 fails
 //     (3 n_stick + n_slip < 6 or n_stick = 0)          -> centroid (footprint) model;
 //   no slipping marker, or a stick set that cannot
-//     fix a general rotation                           -> Kabsch (Eq. 1; what the set fixes);
+//     fix a general rotation, even with the slip
+//     markers' normal residuals (slip_fixes_rotation)  -> Kabsch (Eq. 1; what the set fixes);
 //   otherwise (partial slip)                           -> Ceres stick/slip least squares (Eq. 13-15).
 // stick_slip_only runs Ceres at full stick too (same fall-backs); kabsch_only
 // and centroid_only give their model always.
@@ -23,8 +24,13 @@ std::string_view toString(PoseModel m) noexcept;
 
 struct ModelEvidence {
   bool stick_fit_ok = false;
-  bool rotation_supported = false;
+  bool rotation_supported = false;   // the stick set alone fixes a general rotation
   int n_stick = 0, n_slip = 0;
+  // A thin stick set (a line fixes no rotation about itself) of at least
+  // min_thin_stick_markers, whose rotation the slip markers' normal residuals
+  // fix (stickSlipRotationInformation >= min spread^2: some marker acts at
+  // the min spread from every axis): Eq. 13-15 can give the whole rotation.
+  bool slip_fixes_rotation = false;
 };
 
 PoseModel selectModel(const ModelEvidence& evidence, ModelPolicy policy);

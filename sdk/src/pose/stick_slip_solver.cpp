@@ -3,6 +3,7 @@
 #include <ceres/ceres.h>
 #include <ceres/rotation.h>
 
+#include <Eigen/Eigenvalues>
 #include <cmath>
 
 #include "core/error.hpp"
@@ -16,6 +17,32 @@ void StickSlipSolverOptions::validate() const {
 }
 
 bool stickSlipSolvable(int n_stick, int n_slip) { return 3 * n_stick + n_slip >= 6 && n_stick >= 1; }
+
+double stickSlipRotationInformation(const std::vector<StickCorrespondence>& stick,
+                                    const std::vector<SlipCorrespondence>& slip) {
+  if (stick.empty()) return 0;
+  Eigen::Vector3d c = Eigen::Vector3d::Zero();
+  for (const auto& s : stick) c += s.from;
+  c /= static_cast<double>(stick.size());
+  // Rows d(residual)/d(v, w): stick [I, -[r]x] (3 rows), slip [n^T, (r x n)^T] (1 row).
+  Eigen::Matrix<double, 6, 6> normal = Eigen::Matrix<double, 6, 6>::Zero();
+  for (const auto& s : stick) {
+    Eigen::Matrix<double, 3, 6> j;
+    const Eigen::Vector3d r = s.from - c;
+    j.leftCols<3>().setIdentity();
+    j.rightCols<3>() << 0, r.z(), -r.y(), -r.z(), 0, r.x(), r.y(), -r.x(), 0;  // d(w x r)/dw = -[r]x
+    normal += j.transpose() * j;
+  }
+  for (const auto& s : slip) {
+    Eigen::Matrix<double, 1, 6> j;
+    j << s.normal.transpose(), (s.from - c).cross(s.normal).transpose();
+    normal += j.transpose() * j;
+  }
+  const Eigen::Matrix3d schur = normal.bottomRightCorner<3, 3>() - normal.bottomLeftCorner<3, 3>() *
+                                                                      normal.topLeftCorner<3, 3>().inverse() *
+                                                                      normal.topRightCorner<3, 3>();
+  return Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(schur).eigenvalues().minCoeff();
+}
 
 namespace {
 

@@ -46,6 +46,18 @@ struct StickSlipSolution {
 // True when Eq. 16 holds.
 bool stickSlipSolvable(int n_stick, int n_slip);
 
+// How well the residuals above fix the rotation (mm^2): the smallest
+// eigenvalue of the rotation block of J^T J (unweighted, at dT = identity,
+// about the stick markers' centroid) once the translation is eliminated
+// (Schur complement). A rotation w moves a stick marker by w x r and a slip
+// marker along its normal by w . (r x n), so the value is the least squared
+// lever arm over all rotation axes once the translation has taken its share:
+// about 0 when every marker lies on one line (the rotation about it is free),
+// of the order of k s^2 when k markers act at s from every axis. 0 when there
+// is no stick marker.
+double stickSlipRotationInformation(const std::vector<StickCorrespondence>& stick,
+                                    const std::vector<SlipCorrespondence>& slip);
+
 StickSlipSolution solveStickSlipMotion(const std::vector<StickCorrespondence>& stick,
                                        const std::vector<SlipCorrespondence>& slip,
                                        const Eigen::Isometry3d& initial, const StickSlipSolverOptions& options = {});

@@ -19,8 +19,7 @@ std::optional<ContactModelKind> contactModelFromString(std::string_view name) no
 void PadOptions::validate() const {
   pattern.validate();
   if (!(thickness_mm > 0.5) || thickness_mm > 100) throw InputError("pad: thickness_mm: must be in (0.5, 100]");
-  if (!(marker_depth_mm >= 0) || marker_depth_mm >= thickness_mm)
-    throw InputError("pad: marker_depth_mm: must be in [0, thickness_mm)");
+  if (pattern.marker_depth_mm >= thickness_mm) throw InputError("pad: marker_depth_mm: must be below thickness_mm");
   if (dome_radius_mm < 0 || !std::isfinite(dome_radius_mm))
     throw InputError("pad: dome_radius_mm: must be >= 0 (0 = flat)");
   const double half_extent = 0.5 * pattern.square_mm * (std::max(pattern.rows, pattern.cols) + 2 * margin_squares);
@@ -47,7 +46,7 @@ PadLattice::PadLattice(const PadOptions& o) : options_(o) {
   for (int b = 0; b < nv_; ++b)
     for (int a = 0; a < nu_; ++a) {
       const double x = u0_ + a * h_ - cx, y = v0_ + b * h_ - cy;
-      surface_[static_cast<size_t>(nodeAt(a, b))] = {x, y, o.marker_depth_mm - domeOffset(x, y)};
+      surface_[static_cast<size_t>(nodeAt(a, b))] = {x, y, o.pattern.marker_depth_mm - domeOffset(x, y)};
     }
   marker_node_.resize(static_cast<size_t>(p.count()));
   for (int r = 0; r < p.rows; ++r)
@@ -64,7 +63,7 @@ double PadLattice::domeOffset(double x, double y) const {
 
 Eigen::Vector3d PadLattice::markerLayerRest(int node) const {
   Eigen::Vector3d p = surfaceRest(node);
-  p.z() -= options_.marker_depth_mm;
+  p.z() -= options_.pattern.marker_depth_mm;
   return p;
 }
 

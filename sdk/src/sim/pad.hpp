@@ -1,8 +1,8 @@
 // sim/pad.hpp — the simulated silicone pad: its node lattice and rest shape.
 //
 // The pad is a soft layer of thickness_mm bonded to a rigid transparent base.
-// The checkerboard (the markers) lies in the dermis, marker_depth_mm below the
-// outer surface. Flat by default; with dome_radius_mm > 0 both surfaces are
+// The checkerboard (the markers) lies in the dermis, pattern.marker_depth_mm
+// below the outer surface. Flat by default; with dome_radius_mm > 0 both surfaces are
 // spherical caps of that radius (apex at the centre).
 //
 // Lattice: nodes every h = square_mm / nodes_per_square in pattern coordinates
@@ -10,7 +10,7 @@
 // from -margin_squares to (cols - 1 + margin_squares) squares, so every marker
 // is a node. Node positions are given in the simulator's pad frame P:
 // x = u - (cols-1) * square / 2, y = v - (rows-1) * square / 2 and, for a flat
-// pad, the marker layer at z = 0 and the outer surface at z = marker_depth_mm.
+// pad, the marker layer at z = 0 and the outer surface at z = pattern.marker_depth_mm.
 // P equals the sensor frame S for a flat pad; for a domed pad S is derived
 // from the rest markers as docs/reference.md says (Simulator does that).
 #pragma once
@@ -40,9 +40,8 @@ std::string_view toString(ContactModelKind kind) noexcept;
 std::optional<ContactModelKind> contactModelFromString(std::string_view name) noexcept;
 
 struct PadOptions {
-  MarkerPattern pattern;            // 17 x 17 inner corners, 1.2 mm squares
+  MarkerPattern pattern;            // 17 x 17 inner corners, 1.2 mm squares, 0.3 mm below the surface
   double thickness_mm = 7.0;        // soft layer thickness (decay length of the elastic kernel)
-  double marker_depth_mm = 0.3;     // epidermis over the marker layer
   double dome_radius_mm = 0.0;      // 0: flat
   int nodes_per_square = 1;         // contact lattice nodes per marker spacing (1: one per marker)
   int margin_squares = 3;           // lattice beyond the outer markers

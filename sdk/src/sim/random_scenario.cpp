@@ -120,7 +120,7 @@ RandomScenario randomScenario(unsigned seed) {
   pad.kinetic_ratio = c.model == ContactModelKind::foundation ? c.kinetic_ratio : pad.kinetic_ratio;
   pad.foundation_length_mm = c.foundation_length_mm;
   pad.thickness_mm = c.thickness_mm;
-  pad.marker_depth_mm = c.marker_depth_mm;
+  pad.pattern.marker_depth_mm = c.marker_depth_mm;
   pad.pattern.rows = pad.pattern.cols = c.markers;
   pad.pattern.square_mm = 19.2 / (c.markers - 1);
   sc.fps = c.fps;

@@ -66,7 +66,7 @@ PadOptions readPad(const ConfigNode& node) {
   s.read("cols", p.pattern.cols);
   s.read("square_mm", p.pattern.square_mm);
   s.read("thickness_mm", p.thickness_mm);
-  s.read("marker_depth_mm", p.marker_depth_mm);
+  s.read("marker_depth_mm", p.pattern.marker_depth_mm);
   s.read("dome_radius_mm", p.dome_radius_mm);
   s.read("nodes_per_square", p.nodes_per_square);
   s.read("margin_squares", p.margin_squares);
@@ -228,7 +228,7 @@ std::vector<Eigen::Isometry3d> Scenario::posesAt(double t, const PadLattice& lat
     Eigen::Isometry3d pose = rigidFromTranslationYawPitchRoll(Eigen::Vector3d(k.x, k.y, 0), k.yaw * kRadPerDeg,
                                                               k.pitch * kRadPerDeg, k.roll * kRadPerDeg);
     pose.translation() -= pose.linear() * tr.pivot;  // rotate about the pivot
-    const double surface = lattice.options().marker_depth_mm - lattice.domeOffset(k.x, k.y);
+    const double surface = lattice.options().pattern.marker_depth_mm - lattice.domeOffset(k.x, k.y);
     pose.translation().z() += surface - k.depth - lowestZ(tr.geometry, pose);
     poses.push_back(pose);
   }

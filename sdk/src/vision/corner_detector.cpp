@@ -70,6 +70,13 @@ void checkImage(const cv::Mat& grey) {
 // their quick ring test uses rings scaled by max(1, f/2).
 float candidateRingScale(const CornerDetectorOptions& o) { return std::max(1.0f, 0.5f * static_cast<float>(o.prefilter_downsample)); }
 
+SubpixelOptions fineSubpixel(const CornerDetectorOptions& o) {
+  SubpixelOptions s = o.subpixel;
+  s.half_window = o.fine_half_window;
+  s.weight_sigma = 0.0f;
+  return s;
+}
+
 float mirrorAngle(float a) { return a <= 0.0f ? 0.0f : kPi - a; }
 
 }  // namespace
@@ -89,18 +96,27 @@ void CornerDetectorOptions::validate() const {
   if (!(min_phase_agreement >= 0.0f && min_phase_agreement <= 1.0f))
     throw InputError("corner_detector.min_phase_agreement: must be in 0..1");
   if (!(min_separation_px > 0.0f)) throw InputError("corner_detector.min_separation_px: must be positive");
+  if (!(fine_search_px >= 0.0f)) throw InputError("corner_detector.fine_search_px: must be non-negative");
+  if (!(fine_inner_radius_px >= 1.0f)) throw InputError("corner_detector.fine_inner_radius_px: must be at least 1");
+  if (!(fine_outer_radius_px > fine_inner_radius_px) || fine_outer_radius_px > 40.0f)
+    throw InputError("corner_detector.fine_outer_radius_px: must exceed fine_inner_radius_px and be at most 40");
   subpixel.validate();
+  fineSubpixel(*this).validate();
 }
 
 CornerDetector::CornerDetector(CornerDetectorOptions options)
     : options_((options.validate(), options)),
-      rings_(options.inner_radius_px, options.outer_radius_px, options.samples_per_ring),
-      candidate_rings_(options.inner_radius_px * candidateRingScale(options), options.outer_radius_px * candidateRingScale(options),
-                       options.samples_per_ring),
-      refiner_(options.subpixel) {}
+      stage_{RingSampler(options.inner_radius_px, options.outer_radius_px, options.samples_per_ring),
+             RingSampler(options.inner_radius_px * candidateRingScale(options), options.outer_radius_px * candidateRingScale(options),
+                         options.samples_per_ring),
+             SubpixelRefiner(options.subpixel)},
+      fine_{RingSampler(options.fine_inner_radius_px, options.fine_outer_radius_px, options.samples_per_ring),
+            RingSampler(options.fine_inner_radius_px * candidateRingScale(options),
+                        options.fine_outer_radius_px * candidateRingScale(options), options.samples_per_ring),
+            SubpixelRefiner(fineSubpixel(options))} {}
 
-std::optional<Corner> CornerDetector::refineAndVerify(const cv::Mat& grey, cv::Point2f start) const {
-  const float margin = std::max(rings_.margin(), static_cast<float>(options_.subpixel.half_window + 2));
+std::optional<Corner> CornerDetector::refineAndVerify(const Stage& stage, const cv::Mat& grey, cv::Point2f start) const {
+  const float margin = std::max(stage.rings.margin(), static_cast<float>(stage.refiner.options().half_window + 2));
   const auto insideBy = [&](cv::Point2f p, float m) {
     return p.x >= m && p.y >= m && p.x < grey.cols - m && p.y < grey.rows - m;
   };
@@ -108,12 +124,12 @@ std::optional<Corner> CornerDetector::refineAndVerify(const cv::Mat& grey, cv::P
   if (!inside(start)) return std::nullopt;
   // Cheap rejection before the refinement: four sectors with some contrast
   // on the candidate ring (scaled with the pre-filter's position error).
-  if (!insideBy(start, candidate_rings_.margin())) return std::nullopt;
+  if (!insideBy(start, stage.candidate_rings.margin())) return std::nullopt;
   const cv::Point pixel(static_cast<int>(std::lround(start.x)), static_cast<int>(std::lround(start.y)));
-  if (!candidate_rings_.quickFourSectors(grey, pixel, options_.min_contrast)) return std::nullopt;
-  const auto refined = refiner_.refine(grey, start);
+  if (!stage.candidate_rings.quickFourSectors(grey, pixel, options_.min_contrast)) return std::nullopt;
+  const auto refined = stage.refiner.refine(grey, start);
   if (!refined || !inside(*refined)) return std::nullopt;
-  const RingTest t = rings_.evaluate(grey, *refined);
+  const RingTest t = stage.rings.evaluate(grey, *refined);
   if (!t.four_sectors || t.contrast < options_.min_contrast || t.symmetry < options_.min_symmetry ||
       t.phase_agreement < options_.min_phase_agreement)
     return std::nullopt;
@@ -143,7 +159,7 @@ std::vector<Corner> CornerDetector::detect(const cv::Mat& grey) const {
   for (const cv::Point2f& p : peaks) {
     // Centre of the f x f block that the downsampled pixel averaged.
     const cv::Point2f start((p.x + 0.5f) * f - 0.5f, (p.y + 0.5f) * f - 0.5f);
-    if (auto c = refineAndVerify(grey, start)) corners.push_back(*c);
+    if (auto c = refineAndVerify(stage_, grey, start)) corners.push_back(*c);
   }
   // Non-maximum suppression: strongest first, drop any within the separation.
   std::sort(corners.begin(), corners.end(), [](const Corner& a, const Corner& b) { return a.score > b.score; });
@@ -163,11 +179,18 @@ std::vector<Corner> CornerDetector::detect(const cv::Mat& grey) const {
 
 std::optional<Corner> CornerDetector::detectNear(const cv::Mat& grey, cv::Point2f guess, float search_radius_px) const {
   checkImage(grey);
+  auto found = searchNear(stage_, grey, guess, search_radius_px);
+  if (!found && search_radius_px <= options_.fine_search_px) found = searchNear(fine_, grey, guess, search_radius_px);
+  return found;
+}
+
+std::optional<Corner> CornerDetector::searchNear(const Stage& stage, const cv::Mat& grey, cv::Point2f guess,
+                                                 float search_radius_px) const {
   const float r2 = search_radius_px * search_radius_px;
   const auto within = [&](const std::optional<Corner>& c) {
     return c && (c->pt - guess).dot(c->pt - guess) <= r2;
   };
-  auto direct = refineAndVerify(grey, guess);
+  auto direct = refineAndVerify(stage, grey, guess);
   if (within(direct)) return direct;
   // Fall back to the strongest saddle response in the search window.
   const int r = static_cast<int>(std::ceil(search_radius_px)) + 3;
@@ -178,7 +201,7 @@ std::optional<Corner> CornerDetector::detectNear(const cv::Mat& grey, cv::Point2
   const std::vector<cv::Point2f> peaks = responsePeaks(response, 0.05f);
   std::optional<Corner> best;
   for (const cv::Point2f& p : peaks) {
-    auto c = refineAndVerify(grey, p + cv::Point2f(static_cast<float>(window.x), static_cast<float>(window.y)));
+    auto c = refineAndVerify(stage, grey, p + cv::Point2f(static_cast<float>(window.x), static_cast<float>(window.y)));
     if (within(c) && (!best || (c->pt - guess).dot(c->pt - guess) < (best->pt - guess).dot(best->pt - guess))) best = c;
   }
   return best;

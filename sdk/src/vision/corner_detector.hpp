@@ -14,6 +14,14 @@
 //     phase; score = contrast x symmetry x phase agreement;
 //  4. non-maximum suppression: of corners closer than min_separation_px the
 //     best score wins.
+// detectNear (tracking) falls back to a fine stage when the default one finds
+// nothing and the search radius is at most fine_search_px (the tracker's
+// radius is 0.4 x the shortest predicted link, so a small radius means a
+// foreshortened square): rings of fine_inner/outer_radius_px and a refinement
+// window of fine_half_window. Where the pad dips steeply at the edge of a deep
+// press a square is foreshortened to ~10 px along one axis, and with blur the
+// default 5 px ring and 11 px window take in the next corner's edges, so the
+// ring test fails there; the fine stage sees only the corner itself.
 // Each corner also carries its two edge directions and which sector pair is
 // dark (angles in radians, image axes x right, y down, modulo pi), which the
 // grid builder uses to link neighbours.
@@ -40,6 +48,10 @@ struct CornerDetectorOptions {
   float min_phase_agreement = 0.8f;  // fraction of angles where both rings agree
   float min_separation_px = 4.0f;  // non-maximum suppression distance
   SubpixelOptions subpixel;        // refinement
+  float fine_search_px = 6.0f;     // detectNear: fine stage for search radii up to this (0: never)
+  float fine_inner_radius_px = 2.0f;
+  float fine_outer_radius_px = 3.5f;
+  int fine_half_window = 3;        // the fine stage's refinement half window
   void validate() const;           // throws InputError naming the bad field
 };
 
@@ -60,18 +72,25 @@ class CornerDetector {
   std::vector<Corner> detect(const cv::Mat& grey) const;
 
   // The corner nearest `guess` within search_radius_px, refined and verified
-  // by the ring test, or nothing. For tracking: no full-image pass.
+  // by the ring test (the fine stage as a fallback for a small radius, see
+  // above), or nothing. For tracking: no full-image pass.
   std::optional<Corner> detectNear(const cv::Mat& grey, cv::Point2f guess,
                                    float search_radius_px) const;
 
   const CornerDetectorOptions& options() const noexcept { return options_; }
 
  private:
-  std::optional<Corner> refineAndVerify(const cv::Mat& grey, cv::Point2f start) const;
+  // Rings and refinement of one scale.
+  struct Stage {
+    RingSampler rings;
+    RingSampler candidate_rings;  // the quick test of pre-filter candidates
+    SubpixelRefiner refiner;
+  };
+  std::optional<Corner> refineAndVerify(const Stage& stage, const cv::Mat& grey, cv::Point2f start) const;
+  std::optional<Corner> searchNear(const Stage& stage, const cv::Mat& grey, cv::Point2f guess, float search_radius_px) const;
   CornerDetectorOptions options_;
-  RingSampler rings_;
-  RingSampler candidate_rings_;  // the quick test of pre-filter candidates
-  SubpixelRefiner refiner_;
+  Stage stage_;
+  Stage fine_;
 };
 
 // A corner seen in the raw half, expressed in view coordinates (position and

@@ -38,6 +38,19 @@ std::optional<cv::Point2f> predictFromNeighbours(const LatticeView& g, int r, in
   return cv::Point2f(median(xs, n), median(ys, n));
 }
 
+std::optional<float> closeCompletion(const LatticeView& g, int r, int c, cv::Point2f p) {
+  float worst = 0;
+  int midpoints = 0, count = 0;
+  const auto add = [&](cv::Point2f q) { worst = std::max(worst, static_cast<float>(cv::norm(q - p))), ++count; };
+  if (g.has(r, c - 1) && g.has(r, c + 1)) add(0.5f * (g.at(r, c - 1) + g.at(r, c + 1))), ++midpoints;
+  if (g.has(r - 1, c) && g.has(r + 1, c)) add(0.5f * (g.at(r - 1, c) + g.at(r + 1, c))), ++midpoints;
+  for (int dr = -1; dr <= 1; dr += 2)
+    for (int dc = -1; dc <= 1; dc += 2)
+      if (g.has(r + dr, c) && g.has(r, c + dc) && g.has(r + dr, c + dc)) add(g.at(r + dr, c) + g.at(r, c + dc) - g.at(r + dr, c + dc));
+  if (midpoints == 0 || count < 3) return std::nullopt;
+  return worst;
+}
+
 namespace {
 size_t linkLengths(const LatticeView& g, int r, int c, cv::Point2f p, std::array<float, 4>& d) {
   size_t n = 0;

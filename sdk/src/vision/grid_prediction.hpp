@@ -7,6 +7,12 @@
 // parallelogram completions p[r+dr,c] + p[r,c+dc] - p[r+dr,c+dc]
 // (dr, dc = +-1). The estimate is their component-wise median, which one bad
 // neighbour cannot move far. Exact for any affine map of the lattice.
+// closeCompletion: the largest distance from p to the midpoint and
+// parallelogram completions of (r, c) (no extrapolations, which the lattice's
+// curvature moves), or nothing with fewer than three of them or no midpoint
+// (each parallelogram spans both lattice axes, so three completions with a
+// midpoint tie p to neighbours along both): a tight bound means p sits where
+// its neighbours agree to put it.
 // localSpacing: median distance from p[r,c] to its available 4-neighbours;
 // shortestLink: the smallest of those distances (where a view foreshortens
 // the lattice along one axis, the spacing that bounds a safe search).
@@ -32,6 +38,10 @@ struct LatticeView {
 
 // Median of the neighbour completions of (r, c), or nothing without any.
 std::optional<cv::Point2f> predictFromNeighbours(const LatticeView& grid, int r, int c);
+
+// Largest distance from `p` to the midpoint and parallelogram completions of
+// (r, c); nothing with fewer than three or without a midpoint.
+std::optional<float> closeCompletion(const LatticeView& grid, int r, int c, cv::Point2f p);
 
 // Median distance from `p` to the available 4-neighbours of (r, c), or 0.
 float localSpacing(const LatticeView& grid, int r, int c, cv::Point2f p);

@@ -78,6 +78,8 @@ void GridTrackerOptions::validate() const {
   if (min_seeds < 1) throw InputError("grid_tracker.min_seeds: must be at least 1");
   if (!(relabel_median > 0.0f && relabel_median < 1.0f)) throw InputError("grid_tracker.relabel_median: must be in (0, 1)");
   if (!(seam_stretch > 1.0f && seam_stretch < 2.0f)) throw InputError("grid_tracker.seam_stretch: must be in (1, 2)");
+  if (!(rescue_fraction >= 0.0f && rescue_fraction <= outlier_fraction))
+    throw InputError("grid_tracker.rescue_fraction: must be in [0, outlier_fraction]");
 }
 
 GridTracker::GridTracker(MarkerPattern pattern, GridTrackerOptions options)
@@ -231,6 +233,16 @@ GridResult GridTracker::trackWith(const std::function<std::optional<cv::Point2f>
     std::vector<cv::Point2f> expected = candidates.point;
     std::vector<std::uint8_t> have = candidates.valid;
     fillHoles(pattern_, expected, have);
+    // Searched first where this frame's markers complete it (the growth
+    // searched where their motion put it), unless that is within half a
+    // square of the view's edge; finish() tests it like any other.
+    const cv::Rect2f inner(0, 0, static_cast<float>(view.width()), static_cast<float>(view.height()));
+    for (size_t i = 0; i < n; ++i) {
+      const float m = 0.5f * spacing[i];
+      const cv::Rect2f safe(inner.x + m, inner.y + m, inner.width - 2 * m, inner.height - 2 * m);
+      if (candidates.valid[i] || !have[i] || !safe.contains(expected[i])) continue;
+      if (const auto c = near(expected[i], pred.radius[i])) candidates.point[i] = *c, candidates.valid[i] = 1;
+    }
     std::vector<cv::Point2f> lost;
     std::vector<float> reach(n);
     float widest = 0;
@@ -278,7 +290,7 @@ GridResult GridTracker::finish(const Prediction& pred, ViewMarkers m) {
   // Swap detector: far from where the neighbours put it, links that flip,
   // stretch or cross.
   const LatticeView now = lattice(m), before = lattice(current_);
-  std::vector<int> reject;
+  std::vector<int> reject, off_motion;
   std::vector<float> confidence(n, 0.0f);
   for (int id = 0; id < pattern_.count(); ++id) {
     if (!m.valid[static_cast<size_t>(id)]) continue;
@@ -303,6 +315,7 @@ GridResult GridTracker::finish(const Prediction& pred, ViewMarkers m) {
       const float residual = static_cast<float>(cv::norm(p - *q));
       if (residual > tolerance) {
         reject.push_back(id);
+        off_motion.push_back(id);
         continue;
       }
       agreement = 1.0f - residual / tolerance;
@@ -315,6 +328,7 @@ GridResult GridTracker::finish(const Prediction& pred, ViewMarkers m) {
     confidence[static_cast<size_t>(id)] =
         agreement * (links.checked > 0 ? 1.0f - static_cast<float>(links.bad) / static_cast<float>(links.checked) : 1.0f);
   }
+  rescue(off_motion, pred, m, reject, confidence);
   for (int id : reject) m.clear(id);
   r.rejected = static_cast<int>(reject.size());
   m.confidence = std::move(confidence);
@@ -337,6 +351,27 @@ GridResult GridTracker::finish(const Prediction& pred, ViewMarkers m) {
   r.status = r.found >= 3 ? GridStatus::Ok : GridStatus::Lost;
   if (!r.ok()) r.message = "grid tracker: only " + std::to_string(r.found) + " markers found";
   return r;
+}
+
+void GridTracker::rescue(const std::vector<int>& off_motion, const Prediction& pred, const ViewMarkers& m,
+                         std::vector<int>& reject, std::vector<float>& confidence) const {
+  if (off_motion.empty() || options_.rescue_fraction <= 0.0f) return;
+  std::vector<std::uint8_t> passed = m.valid;
+  for (int id : reject) passed[static_cast<size_t>(id)] = 0;
+  const LatticeView trusted{m.rows, m.cols, &m.point, &passed}, before = lattice(current_);
+  std::vector<int> kept;
+  for (int id : off_motion) {
+    const size_t i = static_cast<size_t>(id);
+    const int row = pattern_.rowOf(id), col = pattern_.colOf(id);
+    const float limit = options_.rescue_fraction * pred.spacing[i];
+    const auto worst = closeCompletion(trusted, row, col, m.point[i]);
+    if (!worst || *worst > limit) continue;
+    const LinkCheck links = checkLinks(trusted, before, row, col, options_.max_link_stretch);
+    if (links.bad > 0 || links.crossed > 0) continue;
+    confidence[i] = 0.5f * (1.0f - *worst / limit);
+    kept.push_back(id);
+  }
+  for (int id : kept) reject.erase(std::find(reject.begin(), reject.end(), id));
 }
 
 GridResult detectBoard(const cv::Mat& grey, const MarkerPattern& pattern, const CornerDetectorOptions& options) {

@@ -15,9 +15,12 @@
 // with the field. With fewer than min_seeds seeds (the whole pattern moved,
 // or the last frame was lost), the frame is detected whole and relabelled
 // through the board's links, anchored to the last ids by the part of the
-// pattern that moved least (grid_recovery.hpp). Markers still lost are
-// recovered through the rigid links of the corners detected around them, up
-// to recovery_reach x spacing from their completion by this frame's markers.
+// pattern that moved least (grid_recovery.hpp). A marker still lost is
+// searched where this frame's markers complete it (grid_prediction.hpp; next
+// to a stick-slip jump their motion and their places disagree; not within
+// half a square of the view's edge), then
+// recovered through the rigid links of the corners detected around it, up
+// to recovery_reach x spacing from that completion.
 // Searches reach search_radius x the shortest predicted link to a
 // 4-neighbour (a foreshortened axis cannot bring its neighbour inside);
 // "spacing" below is the median link.
@@ -42,6 +45,15 @@
 // more than max_link_stretch since the last frame, or when two consecutive
 // links (right, down, left, up in lattice order) turn the wrong way round
 // (links crossing).
+// Stick-slip edges: where part of the contact sticks and its neighbours jump,
+// a correct marker can lie beyond the tolerance from its neighbours' motion.
+// Such a marker (off by motion alone) is kept when, among the neighbours that
+// passed every test, every midpoint and parallelogram completion (at least
+// three, one a midpoint) puts it within rescue_fraction x spacing (closeCompletion, grid_prediction.hpp) and
+// its links pass: a marker on a neighbour's corner is a square away from
+// those, and a region whose ids slipped together has no passing neighbours
+// inside it. Its confidence is 0.5 x (1 - that distance / (rescue_fraction x
+// spacing)) x the link factor.
 // Confidence per reported marker, in 0..1 (ViewMarkers::confidence):
 //   (1 - residual / (outlier_fraction x spacing)) x (good links / links),
 // residual being that distance; 0.5 x the link factor when no neighbour can
@@ -73,6 +85,7 @@ struct GridTrackerOptions {
   int min_seeds = 3;              // fewer seeds: detect the whole view and relabel
   float relabel_median = 0.5f;    // of spacing: the relabelling's largest accepted median distance
   float seam_stretch = 1.5f;      // a link this much longer than its collinear neighbours: look for a seam
+  float rescue_fraction = 0.15f;   // of spacing: off the neighbours' motion but this close to every completion: kept (0: never)
   void validate() const;          // throws InputError naming the bad field
 };
 
@@ -132,6 +145,10 @@ class GridTracker {
                        const RegionDetector& region, const ViewHalf& view);
   // Resolves ids claiming the same corner, rejects outliers, updates the state.
   GridResult finish(const Prediction& prediction, ViewMarkers candidates);
+  // Takes back from `reject` the markers of `off_motion` that sit where the
+  // neighbours that passed put them (see above); sets their confidence.
+  void rescue(const std::vector<int>& off_motion, const Prediction& prediction, const ViewMarkers& m,
+              std::vector<int>& reject, std::vector<float>& confidence) const;
 
   MarkerPattern pattern_;
   GridTrackerOptions options_;

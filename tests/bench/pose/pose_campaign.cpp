@@ -7,10 +7,11 @@
 //   image level (the first --image-runs seeds whose run has at most
 //     --image-max-frames frames): every frame rendered and processed by the
 //     real front end (pipeline::FrameProcessor), marker RMSE against truth kept.
-// Usage: pose_campaign [--runs N] [--image-runs M] [--image-max-frames F]
-//          [--first-seed S] [--out runs.csv]
-//          [--trace SEED | --trace-scenario FILE.yaml] [--trace-out frames.csv]
-// (a trace: one run's frames, truth beside estimate, at field level with
+// Usage: pose_campaign --out runs.csv [--runs N] [--image-runs M]
+//          [--image-max-frames F] [--first-seed S]
+//        pose_campaign (--trace SEED | --trace-scenario FILE.yaml) [--trace-out frames.csv]
+// (a trace: one run's frames, truth beside estimate, with the truly sticking
+// markers (gt_stick) and how many of them the estimate labels stick (stick_true), at field level with
 // 2 grey levels' noise for a scenario file)
 // ms_per_frame: median wall time of contact analysis + pose per contact frame
 // (field level; a campaign figure, the benchmark is bench_pose).
@@ -36,16 +37,31 @@ constexpr double kFieldNoisePerGreyMm = 0.0003;
 struct Args {
   int runs = 300, image_runs = 0, image_max_frames = 400;
   unsigned first_seed = 1;
-  std::string out = "docs/pose/data/campaign.csv";
+  std::string out;  // required for a campaign: no default overwrites the committed table
   long trace = -1;
   std::string trace_scenario;
-  std::string trace_out = "docs/pose/data/campaign_trace.csv";
+  std::string trace_out = "campaign_trace.csv";
 };
+
+constexpr const char* kUsage =
+    "usage: pose_campaign --out runs.csv [--runs N] [--image-runs M] [--image-max-frames F] [--first-seed S]\n"
+    "       pose_campaign (--trace SEED | --trace-scenario FILE.yaml) [--trace-out frames.csv]\n";
+
+[[noreturn]] void usageError(const std::string& why) {
+  std::fprintf(stderr, "pose_campaign: %s\n%s", why.c_str(), kUsage);
+  std::exit(2);
+}
 
 Args parse(int argc, char** argv) {
   Args a;
-  for (int i = 1; i + 1 < argc; i += 2) {
-    const std::string k = argv[i], v = argv[i + 1];
+  for (int i = 1; i < argc; i += 2) {
+    const std::string k = argv[i];
+    if (k == "--help" || k == "-h") {
+      std::fputs(kUsage, stdout);
+      std::exit(0);
+    }
+    if (i + 1 >= argc) usageError("option " + k + " needs a value");
+    const std::string v = argv[i + 1];
     if (k == "--runs") a.runs = std::stoi(v);
     else if (k == "--image-runs") a.image_runs = std::stoi(v);
     else if (k == "--image-max-frames") a.image_max_frames = std::stoi(v);
@@ -54,11 +70,9 @@ Args parse(int argc, char** argv) {
     else if (k == "--trace") a.trace = std::stol(v);
     else if (k == "--trace-scenario") a.trace_scenario = v;
     else if (k == "--trace-out") a.trace_out = v;
-    else {
-      std::fprintf(stderr, "pose_campaign: unknown option %s\n", k.c_str());
-      std::exit(2);
-    }
+    else usageError("unknown option " + k);
   }
+  if (a.out.empty() && a.trace < 0 && a.trace_scenario.empty()) usageError("--out is required for a campaign");
   return a;
 }
 
@@ -107,7 +121,9 @@ std::vector<std::string> row(const char* level, const sim::RandomConditions& c, 
 
 // Field level: the tracker over the noisy marker fields, timed per frame.
 std::vector<ReplayFrame> runField(const Recording& rec, double& median_ms) {
-  input::PoseTracker tracker;
+  input::PoseTrackerOptions options;
+  options.marker_depth_mm = rec.marker_depth_mm;  // the pad's, as the pipeline takes it from the pattern
+  input::PoseTracker tracker(options);
   std::vector<ReplayFrame> frames;
   std::vector<double> ms;
   for (size_t k = 0; k < rec.frames.size(); ++k) {
@@ -127,7 +143,7 @@ std::vector<ReplayFrame> runField(const Recording& rec, double& median_ms) {
 
 void writeTrace(const std::vector<ReplayFrame>& frames, const std::string& path) {
   std::vector<std::string> h = {"frame", "t", "gt_contact", "gt_state", "contact", "state", "model",
-                                "region_markers", "n_stick", "n_slip"};
+                                "region_markers", "n_stick", "n_slip", "gt_stick", "stick_true"};
   for (const char* axis : {"dx", "dy", "dz", "yaw", "pitch", "roll"}) h.push_back(std::string("gt_") + axis);
   for (const char* axis : {"dx", "dy", "dz", "yaw", "pitch", "roll"}) h.push_back(axis);
   CsvWriter out(path, h);
@@ -137,7 +153,8 @@ void writeTrace(const std::vector<ReplayFrame>& frames, const std::string& path)
                                   std::string(toString(f.gt_state)), f.contact ? "1" : "0",
                                   std::string(toString(f.state)), std::string(pose::toString(f.model)),
                                   std::to_string(f.region_markers), std::to_string(f.n_stick),
-                                  std::to_string(f.n_slip)};
+                                  std::to_string(f.n_slip), std::to_string(countTrulySticking(f)),
+                                  std::to_string(countLabelledTrulySticking(f))};
     for (double v : f.gt.asArray()) r.push_back(num(v));
     for (double v : f.raw.asArray()) r.push_back(num(v));
     out.row(r);

@@ -9,14 +9,18 @@
 // that lie in both views; *_detected: reported within 0.4 square of the truth
 // in both views; gross: (marker, view) pairs reported beyond 0.4 square.
 // Usage: bench_vision_campaign --out FILE.csv [--kind K] [--runs N]
-//          [--random N] [--max-frames F] [--only INDEX]
+//          [--random N] [--max-frames F] [--only INDEX[,INDEX...]]
 // --random N adds the random combined runs of seeds 1..N (both contact
-// models), each cut to its first F frames (default 150).
+// models), each cut to its first F frames (default 150). --only plays just the
+// runs of those indices (e.g. the ones that miss a target), each numbered as
+// in the full campaign.
 // docs/vision/campaign_charts.py draws the charts from the CSV.
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <set>
+#include <sstream>
 #include <string>
 
 #include "campaign_runs.hpp"
@@ -62,21 +66,25 @@ void runOne(int index, const bench::CampaignRun& run, std::ofstream& csv, Totals
 
 int main(int argc, char** argv) {
   std::string out, kind;
-  int max_runs = 1 << 30, random = 0, max_frames = 150, only = -1;
+  int max_runs = 1 << 30, random = 0, max_frames = 150;
+  std::set<int> only;
   for (int i = 1; i + 1 < argc; i += 2) {
     if (!std::strcmp(argv[i], "--out")) out = argv[i + 1];
     else if (!std::strcmp(argv[i], "--kind")) kind = argv[i + 1];
     else if (!std::strcmp(argv[i], "--runs")) max_runs = std::atoi(argv[i + 1]);
     else if (!std::strcmp(argv[i], "--random")) random = std::atoi(argv[i + 1]);
     else if (!std::strcmp(argv[i], "--max-frames")) max_frames = std::atoi(argv[i + 1]);
-    else if (!std::strcmp(argv[i], "--only")) only = std::atoi(argv[i + 1]);
+    else if (!std::strcmp(argv[i], "--only")) {
+      std::stringstream list(argv[i + 1]);
+      for (std::string item; std::getline(list, item, ',');) only.insert(std::atoi(item.c_str()));
+    }
     else {
       std::fprintf(stderr, "unknown option %s\n", argv[i]);
       return 2;
     }
   }
   if (out.empty()) {
-    std::fprintf(stderr, "usage: bench_vision_campaign --out FILE.csv [--kind slide|shear|tilt|combined|random] [--runs N] [--random N] [--max-frames F] [--only INDEX]\n");
+    std::fprintf(stderr, "usage: bench_vision_campaign --out FILE.csv [--kind slide|shear|tilt|combined|random] [--runs N] [--random N] [--max-frames F] [--only INDEX[,INDEX...]]\n");
     return 2;
   }
   const std::string staging = out + ".part";
@@ -92,7 +100,7 @@ int main(int argc, char** argv) {
   std::vector<bench::CampaignRun> runs = bench::scriptedRuns();
   for (bench::CampaignRun& r : bench::randomRuns(random, max_frames)) runs.push_back(std::move(r));
   for (size_t i = 0; i < runs.size() && done < max_runs; ++i) {
-    if ((!kind.empty() && runs[i].kind != kind) || (only >= 0 && static_cast<int>(i) != only)) continue;
+    if ((!kind.empty() && runs[i].kind != kind) || (!only.empty() && !only.count(static_cast<int>(i)))) continue;
     runOne(static_cast<int>(i), runs[i], csv, totals);
     ++done;
   }

@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 
 #include "core/atomic_file.hpp"
 #include "core/calibration.hpp"
@@ -19,6 +20,10 @@ using onetip::test_support::inputErrorOf;
 
 namespace {
 void writeText(const fs::path& p, const std::string& s) { std::ofstream(p) << s; }
+std::string readText(const fs::path& p) {
+  std::ifstream in(p);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
 }  // namespace
 
 TEST(Files, ReadsTheReferenceCalibrationOfTheRealPhotos) {
@@ -76,6 +81,29 @@ TEST(Files, PatternRoundTripAndValidation) {
   writeText(scratch.path() / "bad_pattern.yaml", "%YAML:1.0\n---\nrows: 0\ncols: 5\nsquare_mm: 1\n");
   EXPECT_NE(inputErrorOf([&] { loadPattern((scratch.path() / "bad_pattern.yaml").string()); }).find("rows"),
             std::string::npos);
+}
+
+// marker_depth_mm is optional: a file of the three documented keys reads the
+// default, a pad with another depth writes and reads it back, and a bad depth
+// is named with its file, line and key.
+TEST(Files, PatternMarkerDepthIsOptionalAndChecked) {
+  const test_support::ScratchDir scratch("onetip-core-files");
+  const auto three = scratch.path() / "three_keys.yaml";
+  writeText(three, "%YAML:1.0\n---\nrows: 5\ncols: 6\nsquare_mm: 1.5\n");
+  EXPECT_DOUBLE_EQ(loadPattern(three.string()).marker_depth_mm, MarkerPattern{}.marker_depth_mm);
+  const auto deep = (scratch.path() / "deep.yaml").string();
+  MarkerPattern pad{5, 6, 1.5};
+  pad.marker_depth_mm = 0.55;
+  savePattern(pad, deep);
+  EXPECT_DOUBLE_EQ(loadPattern(deep).marker_depth_mm, 0.55);
+  const auto plain = (scratch.path() / "plain.yaml").string();
+  savePattern({5, 6, 1.5}, plain);
+  EXPECT_EQ(readText(plain).find("marker_depth_mm"), std::string::npos);  // the documented three keys only
+  const auto bad = scratch.path() / "bad_depth.yaml";
+  writeText(bad, "%YAML:1.0\n---\nrows: 5\ncols: 6\nsquare_mm: 1.5\nmarker_depth_mm: -1\n");
+  const std::string why = inputErrorOf([&] { loadPattern(bad.string()); });
+  EXPECT_NE(why.find("bad_depth.yaml:6"), std::string::npos) << why;
+  EXPECT_NE(why.find("marker_depth_mm"), std::string::npos) << why;
 }
 
 TEST(Files, AtomicFileLeavesNothingWithoutCommit) {

@@ -12,8 +12,6 @@ bool inWorkingRange(const Input6& g) {
 
 bool inLinearRange(const Input6& g) { return inWorkingRange(g) && std::abs(g.dx) <= 1.5 && std::abs(g.dy) <= 1.5; }
 
-namespace {
-
 bool trulySticks(const ReplayFrame& f, size_t i) {
   return i < f.gt_contact_markers.size() && f.gt_contact_markers[i] && !(i < f.gt_slip.size() && f.gt_slip[i]);
 }
@@ -24,7 +22,11 @@ int countTrulySticking(const ReplayFrame& f) {
   return n;
 }
 
-}  // namespace
+int countLabelledTrulySticking(const ReplayFrame& f) {
+  int n = 0;
+  for (size_t i = 0; i < f.stick.size(); ++i) n += (f.stick[i] && trulySticks(f, i)) ? 1 : 0;
+  return n;
+}
 
 RunScore scoreRun(const std::vector<ReplayFrame>& frames) {
   RunScore s;

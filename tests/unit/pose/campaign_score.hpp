@@ -30,6 +30,9 @@ constexpr double kDivergenceMm = 1.0, kDivergenceDeg = 5.0;
 
 bool inWorkingRange(const Input6& truth);
 bool inLinearRange(const Input6& truth);
+bool trulySticks(const ReplayFrame& frame, size_t marker);     // touches an indenter and does not slip
+int countTrulySticking(const ReplayFrame& frame);              // markers that truly stick
+int countLabelledTrulySticking(const ReplayFrame& frame);      // ... and are labelled stick by the estimate
 
 struct RunScore {
   int frames = 0;            // all frames of the run

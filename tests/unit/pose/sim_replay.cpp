@@ -30,6 +30,7 @@ Recording record(const sim::Scenario& scenario, const ReplayOptions& options) {
   sim::Simulator simulator(scenario);
   std::mt19937 rng(options.seed);
   Recording out;
+  out.marker_depth_mm = simulator.pattern().marker_depth_mm;
   out.rest = perturbed(simulator.restMarkers(), options.noise_mm, 0.0, rng);
   while (!simulator.done()) {
     const sim::GroundTruthFrame& f = simulator.next();
@@ -72,7 +73,8 @@ ReplayFrame replayFrame(const sim::GroundTruthFrame& f, const input::TrackerResu
   return out;
 }
 
-std::vector<ReplayFrame> track(const Recording& recording, const input::PoseTrackerOptions& options) {
+std::vector<ReplayFrame> track(const Recording& recording, input::PoseTrackerOptions options) {
+  options.marker_depth_mm = recording.marker_depth_mm;
   input::PoseTracker tracker(options);
   std::vector<ReplayFrame> frames;
   for (size_t k = 0; k < recording.frames.size(); ++k) {

@@ -53,14 +53,15 @@ struct Recording {
   MarkerField rest;
   std::vector<MarkerField> frames;
   std::vector<sim::GroundTruthFrame> truth;
+  double marker_depth_mm = 0;  // the scenario pad's (the tracker is given it, as the pipeline is)
 };
 
 sim::Scenario sampleScenario(const std::string& name);  // samples/scenarios/<name>.yaml
 // One frame's ground truth next to the tracker's result for it.
 ReplayFrame replayFrame(const sim::GroundTruthFrame& truth, const input::TrackerResult& result, int marker_count);
 Recording record(const sim::Scenario& scenario, const ReplayOptions& options = {});
-// Runs a recording through a PoseTracker with options.tracker.
-std::vector<ReplayFrame> track(const Recording& recording, const input::PoseTrackerOptions& options = {});
+// Runs a recording through a PoseTracker with options.tracker and the recording's marker depth.
+std::vector<ReplayFrame> track(const Recording& recording, input::PoseTrackerOptions options = {});
 std::vector<ReplayFrame> replay(const sim::Scenario& scenario, const ReplayOptions& options = {});
 
 }  // namespace onetip::poseval

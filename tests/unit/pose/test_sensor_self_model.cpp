@@ -125,6 +125,9 @@ TEST(ModelSelection, FollowsEquation16AndTheStickSet) {
   EXPECT_EQ(selectModel(e, ModelPolicy::adaptive), PoseModel::stick_slip);  // partial slip
   e.rotation_supported = false;
   EXPECT_EQ(selectModel(e, ModelPolicy::adaptive), PoseModel::kabsch);  // thin stick set: what it fixes
+  e.slip_fixes_rotation = true;
+  EXPECT_EQ(selectModel(e, ModelPolicy::adaptive), PoseModel::stick_slip);  // the slip markers fix the rest
+  e.slip_fixes_rotation = false;
   e.n_stick = 1;
   e.n_slip = 2;  // 3 + 2 < 6: Eq. 16 fails
   EXPECT_EQ(selectModel(e, ModelPolicy::adaptive), PoseModel::centroid);

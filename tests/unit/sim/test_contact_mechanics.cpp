@@ -14,7 +14,7 @@ using namespace onetip::sim;
 namespace {
 Eigen::Isometry3d fingerAt(const PadOptions& pad, double x, double depth) {
   Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
-  T.translation() = Eigen::Vector3d(x, 0, pad.marker_depth_mm - depth);  // tip of an upright ellipsoid
+  T.translation() = Eigen::Vector3d(x, 0, pad.pattern.marker_depth_mm - depth);  // tip of an upright ellipsoid
   return T;
 }
 

@@ -19,7 +19,7 @@ namespace {
 
 Eigen::Isometry3d tipAt(const PadOptions& pad, double x, double depth) {
   Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
-  T.translation() = Eigen::Vector3d(x, 0, pad.marker_depth_mm - depth);
+  T.translation() = Eigen::Vector3d(x, 0, pad.pattern.marker_depth_mm - depth);
   return T;
 }
 
