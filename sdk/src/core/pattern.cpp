@@ -3,22 +3,18 @@
 #include <cmath>
 
 #include "core/error.hpp"
+#include "core/option_checks.hpp"
 #include "core/config_file.hpp"
 #include "core/filestorage_io.hpp"
 
 namespace onetip {
-
-namespace {
-constexpr double kMaxMarkerDepthMm = 10;
-}  // namespace
 
 void MarkerPattern::validate() const {
   if (rows < 2 || rows > 1000) throw InputError("pattern: rows: must be between 2 and 1000");
   if (cols < 2 || cols > 1000) throw InputError("pattern: cols: must be between 2 and 1000");
   if (!(square_mm > 0.0) || !std::isfinite(square_mm))
     throw InputError("pattern: square_mm: must be a positive number");
-  if (!(marker_depth_mm >= 0.0 && marker_depth_mm <= kMaxMarkerDepthMm))
-    throw InputError("pattern: marker_depth_mm: must be in [0, 10]");
+  requireInRange("pattern: marker_depth_mm", marker_depth_mm, 0, kMaxMarkerDepthMm, "mm");
 }
 
 MarkerPattern loadPattern(const std::string& path) {
@@ -28,7 +24,7 @@ MarkerPattern loadPattern(const std::string& path) {
   p.rows = root["rows"].integer(2, 1000);
   p.cols = root["cols"].integer(2, 1000);
   p.square_mm = root["square_mm"].real(1e-3, 1e4);
-  p.marker_depth_mm = root.real("marker_depth_mm", MarkerPattern{}.marker_depth_mm, 0, kMaxMarkerDepthMm);
+  p.marker_depth_mm = root.real("marker_depth_mm", MarkerPattern{}.marker_depth_mm, 0, MarkerPattern::kMaxMarkerDepthMm);
   return p;
 }
 

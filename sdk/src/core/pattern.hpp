@@ -20,7 +20,8 @@ struct MarkerPattern {
   int rows = 17;
   int cols = 17;
   double square_mm = 1.2;
-  double marker_depth_mm = 0.3;  // [0, 10] mm below the contact surface
+  static constexpr double kMaxMarkerDepthMm = 10;
+  double marker_depth_mm = 0.3;  // [0, kMaxMarkerDepthMm] mm below the contact surface
 
   int count() const noexcept { return rows * cols; }
   int id(int row, int col) const noexcept { return row * cols + col; }

@@ -17,7 +17,7 @@ void PoseTrackerOptions::validate() const {
   press.validate();
   for (double r : working_range) requireAbove("pose tracker: working_range entries", r, 0);
   requireAtLeast("pose tracker: clamp_factor", clamp_factor, 1);
-  requireInRange("pose tracker: marker_depth_mm", marker_depth_mm, 0, 10);
+  requireInRange("pose tracker: marker_depth_mm", marker_depth_mm, 0, MarkerPattern::kMaxMarkerDepthMm, "mm");
 }
 
 PoseTracker::PoseTracker(PoseTrackerOptions options)

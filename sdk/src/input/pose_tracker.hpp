@@ -44,7 +44,7 @@ struct PoseTrackerOptions {
   std::array<double, 6> working_range{4, 4, 3, 15, 40, 40};
   double clamp_factor = 1.5;
   // How deep the markers lie below the contact surface (core/pattern.hpp; the
-  // pipeline takes it from the pattern), [0, 10] mm: the 6-D signal is the
+  // pipeline takes it from the pattern), [0, MarkerPattern::kMaxMarkerDepthMm] mm: the 6-D signal is the
   // finger's motion, the markers' conjugated by it (pose_accumulator.hpp).
   double marker_depth_mm = MarkerPattern{}.marker_depth_mm;
   void validate() const;  // throws InputError naming the bad field

@@ -25,18 +25,26 @@ Eigen::Isometry3d motion(double x, double yaw_deg) {
   return T;
 }
 
+// A 5 x 5 flat grid, every marker anchored at rest and sticking (hold 3 frames).
+struct AnchoredGrid {
+  MarkerField rest = synth::flatGrid(5, 5);
+  std::vector<int> all;
+  std::vector<Eigen::Vector3d> up = std::vector<Eigen::Vector3d>(25, Eigen::Vector3d::UnitZ());
+  StickSlipClassifier c{contact::StickSlipOptions{0.01, 3}};
+  AnchoredGrid() {
+    for (int i = 0; i < 25; ++i) all.push_back(i);
+    c.reset(25);
+    c.anchorNew(all, rest, Eigen::Isometry3d::Identity());
+  }
+};
+
 }  // namespace
 
 TEST(StickSlipClassifier, RigidMotionSticksSlidingMarkersSlipAndReturnAfterTheHold) {
-  const MarkerField rest = synth::flatGrid(5, 5);
-  std::vector<int> all(25);
-  for (int i = 0; i < 25; ++i) all[static_cast<size_t>(i)] = i;
-  const std::vector<Eigen::Vector3d> up(25, Eigen::Vector3d::UnitZ());
-  contact::StickSlipOptions o;
-  o.stick_hold_frames = 3;
-  StickSlipClassifier c(o);
-  c.reset(25);
-  c.anchorNew(all, rest, Eigen::Isometry3d::Identity());
+  AnchoredGrid g;
+  const MarkerField& rest = g.rest;
+  const std::vector<Eigen::Vector3d>& up = g.up;
+  StickSlipClassifier& c = g.c;
 
   // Frame 1: the finger moved; marker 0 stayed 0.1 mm behind (slid tangentially).
   const Eigen::Isometry3d T1 = motion(0.3, 2);
@@ -83,4 +91,50 @@ TEST(StickSlipClassifier, OptionsAreValidated) {
   o = {};
   o.stick_hold_frames = 0;
   EXPECT_THROW(StickSlipClassifier{o}, InputError);
+}
+
+// A marker the front end misses for a frame is not a new marker: it comes back
+// with the label and anchor it had (here: slipping, 0.1 mm behind its anchor,
+// so the next classification still finds it slipping), not as a fresh stick
+// marker anchored wherever it reappears. One measured outside the region is
+// forgotten and starts again as stick.
+TEST(StickSlipClassifier, AMarkerUnmeasuredForAFrameComesBackWithItsLabel) {
+  AnchoredGrid g;
+  const MarkerField& rest = g.rest;
+  const std::vector<int>& all = g.all;
+  const std::vector<Eigen::Vector3d>& up = g.up;
+  StickSlipClassifier& c = g.c;
+  const Eigen::Isometry3d T = motion(0.3, 2);
+  MarkerField f1 = moved(rest, T);
+  f1.position[0] -= Eigen::Vector3d(0.1, 0, 0);
+  c.classify(f1, up, T);
+  ASSERT_EQ(c.label(0), MarkerLabel::slip);
+
+  // Frame 2: markers 0 and 6 are not measured (dropped by the front end).
+  MarkerField f2 = moved(rest, T);
+  f2.valid[0] = f2.valid[6] = 0;
+  std::vector<int> seen;
+  for (int i : all)
+    if (f2.valid[static_cast<size_t>(i)]) seen.push_back(i);
+  c.retain(seen, f2);
+  EXPECT_EQ(c.label(0), MarkerLabel::outside);
+  c.anchorNew(seen, f2, T);
+
+  // Frame 3: both are back; marker 0 has slid a further 0.1 mm behind the finger.
+  MarkerField f3 = moved(rest, T);
+  f3.position[0] -= Eigen::Vector3d(0.2, 0, 0);
+  c.retain(all, f3);
+  c.anchorNew(all, f3, T);
+  EXPECT_EQ(c.label(0), MarkerLabel::slip);
+  EXPECT_EQ(c.label(6), MarkerLabel::stick);
+  c.classify(f3, up, T);
+  EXPECT_EQ(c.label(0), MarkerLabel::slip);  // 0.1 mm off its old anchor: still slipping
+  EXPECT_EQ(c.label(6), MarkerLabel::stick);
+
+  // Marker 0 measured but outside the region for a frame: forgotten, back as stick.
+  std::vector<int> without0(all.begin() + 1, all.end());
+  c.retain(without0, f3);
+  c.retain(all, f3);
+  c.anchorNew(all, f3, T);
+  EXPECT_EQ(c.label(0), MarkerLabel::stick);
 }
