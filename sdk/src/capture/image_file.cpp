@@ -1,5 +1,6 @@
 #include "capture/image_file.hpp"
 
+#include <algorithm>
 #include <fstream>
 #include <opencv2/imgcodecs.hpp>
 #include <vector>
@@ -15,12 +16,19 @@ std::uint32_t le16(const std::uint8_t* p) { return static_cast<std::uint32_t>(p[
 std::uint32_t be32(const std::uint8_t* p) { return be16(p) << 16 | be16(p + 2); }
 std::uint32_t le32(const std::uint8_t* p) { return le16(p + 2) << 16 | le16(p); }
 
-std::optional<cv::Size> sizeOf(std::int64_t w, std::int64_t h) {
-  if (w <= 0 || h <= 0 || w > (1 << 30) || h > (1 << 30)) return cv::Size{-1, -1};  // declared, but absurd
-  return cv::Size{static_cast<int>(w), static_cast<int>(h)};
+// A header's declaration: the image size and the largest block a decoder
+// allocates at once for it (a TIFF strip or tile may exceed the image).
+struct Declared {
+  cv::Size size;
+  std::int64_t block_pixels = 0;
+};
+
+std::optional<Declared> sizeOf(std::int64_t w, std::int64_t h) {
+  if (w <= 0 || h <= 0 || w > (1 << 30) || h > (1 << 30)) return Declared{{-1, -1}, 0};  // declared, but absurd
+  return Declared{{static_cast<int>(w), static_cast<int>(h)}, w * h};
 }
 
-std::optional<cv::Size> pngSize(const std::uint8_t* d, std::size_t n) {
+std::optional<Declared> pngSize(const std::uint8_t* d, std::size_t n) {
   static const std::uint8_t sig[8] = {0x89, 'P', 'N', 'G', 0x0D, 0x0A, 0x1A, 0x0A};
   if (n < 24 || !std::equal(sig, sig + 8, d) || !std::equal(d + 12, d + 16, "IHDR")) return std::nullopt;
   return sizeOf(be32(d + 16), be32(d + 20));
@@ -30,7 +38,7 @@ bool isJpegFrameMarker(std::uint8_t m) {  // SOF0..SOF15 except DHT (C4), JPG (C
   return m >= 0xC0 && m <= 0xCF && m != 0xC4 && m != 0xC8 && m != 0xCC;
 }
 
-std::optional<cv::Size> jpegSize(const std::uint8_t* d, std::size_t n) {
+std::optional<Declared> jpegSize(const std::uint8_t* d, std::size_t n) {
   if (n < 4 || d[0] != 0xFF || d[1] != 0xD8) return std::nullopt;
   std::size_t i = 2;
   while (i + 1 < n) {
@@ -52,14 +60,20 @@ std::optional<cv::Size> jpegSize(const std::uint8_t* d, std::size_t n) {
   return std::nullopt;
 }
 
-std::optional<cv::Size> bmpSize(const std::uint8_t* d, std::size_t n) {
+std::optional<Declared> bmpSize(const std::uint8_t* d, std::size_t n) {
   if (n < 26 || d[0] != 'B' || d[1] != 'M') return std::nullopt;
   if (le32(d + 14) == 12) return sizeOf(le16(d + 18), le16(d + 20));  // OS/2 core header
   const auto h = static_cast<std::int32_t>(le32(d + 22));             // negative: top-down rows
   return sizeOf(static_cast<std::int32_t>(le32(d + 18)), h < 0 ? -static_cast<std::int64_t>(h) : h);
 }
 
-std::optional<cv::Size> tiffSize(const std::uint8_t* d, std::size_t n) {
+// TIFF: the first IFD's ImageWidth (256) and ImageLength (257), and the block
+// libtiff decodes at once: a strip of RowsPerStrip (278) rows, or a tile of
+// TileWidth (322) x TileLength (323). A size tag given twice or with a count
+// other than one is ambiguous (libtiff keeps the first, a naive reader the
+// last: a fuzzer found 10000x20617 hiding behind a second ImageLength of 47),
+// so it is refused as an impossible size.
+std::optional<Declared> tiffSize(const std::uint8_t* d, std::size_t n) {
   if (n < 8) return std::nullopt;
   const bool le = d[0] == 'I' && d[1] == 'I' && d[2] == 42 && d[3] == 0;
   const bool be = d[0] == 'M' && d[1] == 'M' && d[2] == 0 && d[3] == 42;
@@ -69,41 +83,64 @@ std::optional<cv::Size> tiffSize(const std::uint8_t* d, std::size_t n) {
   const std::size_t ifd = u32(4);
   if (ifd > n || n - ifd < 2) return std::nullopt;
   const std::size_t entries = u16(ifd);
-  std::int64_t w = -1, h = -1;
+  constexpr std::uint32_t kTags[] = {256, 257, 278, 322, 323};  // width, length, rows per strip, tile w, tile l
+  std::int64_t value[5] = {-1, -1, -1, -1, -1};
+  bool ambiguous = false;
   for (std::size_t k = 0; k < entries; ++k) {
     const std::size_t e = ifd + 2 + 12 * k;
     if (e + 12 > n) return std::nullopt;
     const std::uint32_t tag = u16(e), type = u16(e + 2);
-    if (tag != 256 && tag != 257) continue;
-    const std::int64_t v = type == 3 ? u16(e + 8) : type == 4 ? u32(e + 8) : -1;
-    (tag == 256 ? w : h) = v;
+    const auto* slot = std::find(std::begin(kTags), std::end(kTags), tag);
+    if (slot == std::end(kTags)) continue;
+    std::int64_t& v = value[slot - std::begin(kTags)];
+    ambiguous |= v != -1 || u32(e + 4) != 1;
+    v = type == 3 ? u16(e + 8) : type == 4 ? u32(e + 8) : -2;
   }
-  if (w < 0 || h < 0) return std::nullopt;
-  return sizeOf(w, h);
+  const std::int64_t w = value[0], h = value[1], rows = value[2], tile_w = value[3], tile_h = value[4];
+  if (w == -1 || h == -1) return std::nullopt;
+  std::optional<Declared> out = sizeOf(w, h);
+  if (ambiguous || out->size.width <= 0) return Declared{{-1, -1}, 0};
+  const auto dim = [](std::int64_t v) { return std::clamp<std::int64_t>(v, 1, 1 << 30); };  // no overflow below
+  if (tile_w != -1 || tile_h != -1) {
+    out->block_pixels = dim(tile_w) * dim(tile_h);
+  } else if (rows > 0 && rows != 0xFFFFFFFF) {  // 2^32 - 1 (the default) or 0: one strip of all rows
+    out->block_pixels = w * dim(rows);
+  }
+  return out;
 }
 
 std::string sizeText(cv::Size s) { return std::to_string(s.width) + "x" + std::to_string(s.height); }
 
 }  // namespace
 
-std::optional<cv::Size> declaredImageSize(const std::uint8_t* data, std::size_t bytes) {
+namespace {
+std::optional<Declared> declaredImage(const std::uint8_t* data, std::size_t bytes) {
   if (!data) return std::nullopt;
   for (auto reader : {pngSize, jpegSize, bmpSize, tiffSize})
     if (auto s = reader(data, bytes)) return s;
   return std::nullopt;
 }
+}  // namespace
+
+std::optional<cv::Size> declaredImageSize(const std::uint8_t* data, std::size_t bytes) {
+  const std::optional<Declared> d = declaredImage(data, bytes);
+  return d ? std::optional<cv::Size>(d->size) : std::nullopt;
+}
 
 std::optional<std::string> imageHeaderProblem(const std::uint8_t* data, std::size_t bytes, const ImageLimits& limits,
                                               cv::Size& declared) {
-  const std::optional<cv::Size> size = declaredImageSize(data, bytes);
-  if (!size) return "not a PNG, JPEG, BMP or TIFF image (unrecognised or truncated header)";
-  declared = *size;
-  if (declared.width <= 0) return "the image header declares an impossible size";
+  const std::optional<Declared> image = declaredImage(data, bytes);
+  if (!image) return "not a PNG, JPEG, BMP or TIFF image (unrecognised or truncated header)";
+  declared = image->size;
+  if (declared.width <= 0) return "the image header declares an impossible size (absurd, or a size tag given twice)";
   if (limits.expected.width > 0 && declared != limits.expected)
     return "wrong frame size " + sizeText(declared) + " (expected " + sizeText(limits.expected) + ")";
   if (static_cast<std::int64_t>(declared.width) * declared.height > limits.max_pixels)
     return "the image header declares " + sizeText(declared) + " pixels, more than the " +
            std::to_string(limits.max_pixels) + "-pixel bound";
+  if (image->block_pixels > limits.max_pixels)
+    return "the image header declares a strip or tile of " + std::to_string(image->block_pixels) +
+           " pixels, more than the " + std::to_string(limits.max_pixels) + "-pixel bound";
   return std::nullopt;
 }
 

@@ -1,7 +1,8 @@
 // Image files: the header's declared size is read before decoding and checked
 // against the stream's size and a pixel bound (capture/image_file.hpp). Ground
 // truth: images encoded here by OpenCV at known sizes, and the hostile corpus
-// of tests/hostile/corpus (a 68-byte PNG that claims 40000x40000 pixels).
+// of tests/hostile/corpus (a 68-byte PNG that claims 40000x40000 pixels, TIFFs
+// whose size tags or strip would make OpenCV allocate far beyond the bound).
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -65,6 +66,10 @@ TEST(ImageFile, HostileHeadersAreReasonsNotExceptions) {
            {"png_claims_32000x32000.png", "32000x32000"},
            {"jpeg_claims_60000x60000.jpg", "60000x60000"},
            {"png_claims_0x0.png", "impossible size"},
+           // found by fuzz_frame: libtiff keeps the first ImageLength (20617), a reader keeping the last saw 47
+           {"tiff_hides_10000x20617_behind_a_second_length.tif", "size tag given twice"},
+           // a 64x64 image in one strip of 10^6 rows: OpenCV would allocate the strip (256 MB)
+           {"tiff_strip_of_1000000_rows.tif", "strip or tile of 64000000 pixels"},
            {"truncated_header.png", "unrecognised"},
            {"not_an_image.png", "unrecognised"}}) {
     const GreyImage image = readGreyImage((kCorpus / file).string(), limits);
