@@ -102,6 +102,13 @@ void StickSlipClassifier::markAllSticking(const MarkerField& now, const Eigen::I
     }
 }
 
+void StickSlipClassifier::markSticking(const std::vector<int>& sticking, const MarkerField& now,
+                                       const Eigen::Isometry3d& pose) {
+  markAllSlipping(now, pose);
+  for (int id : sticking)
+    if (label_[static_cast<size_t>(id)] != MarkerLabel::outside) label_[static_cast<size_t>(id)] = MarkerLabel::stick;
+}
+
 std::vector<int> StickSlipClassifier::withLabel(MarkerLabel l) const {
   std::vector<int> ids;
   for (size_t i = 0; i < label_.size(); ++i)

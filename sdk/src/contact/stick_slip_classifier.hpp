@@ -62,6 +62,8 @@ class StickSlipClassifier {
   void markAllSlipping(const MarkerField& now, const Eigen::Isometry3d& pose);
   // Every anchored marker sticks, re-anchored under `pose`.
   void markAllSticking(const MarkerField& now, const Eigen::Isometry3d& pose);
+  // Every anchored marker is re-anchored under `pose`: those in `sticking` stick, the others slip.
+  void markSticking(const std::vector<int>& sticking, const MarkerField& now, const Eigen::Isometry3d& pose);
 
   MarkerLabel label(int id) const { return label_[static_cast<size_t>(id)]; }
   const Eigen::Vector3d& anchor(int id) const { return anchor_[static_cast<size_t>(id)]; }

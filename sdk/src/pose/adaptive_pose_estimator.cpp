@@ -92,6 +92,14 @@ Eigen::Isometry3d AdaptivePoseEstimator::solveIncrement(const contact::ContactFi
   const Eigen::Isometry3d centroid_step = centroidStep(field, members, now);
   const ModelPolicy policy = options_.policy;
 
+  if (macro_slip_ && ++macro_frames_ >= t_.window_frames) {
+    if (const std::optional<Eigen::Isometry3d> back = restick(field, members, now)) {
+      macro_slip_ = false;
+      step.model = PoseModel::kabsch;
+      step.stuck_again = true;
+      return *back;
+    }
+  }
   if (policy == ModelPolicy::centroid_only || (policy == ModelPolicy::adaptive && macro_slip_)) {
     step.model = PoseModel::centroid;
     if (macro_slip_) classifier_.markAllSlipping(now, centroid_step * pose_);
@@ -154,6 +162,11 @@ Eigen::Isometry3d AdaptivePoseEstimator::solveIncrement(const contact::ContactFi
     step.model = PoseModel::kabsch;
     return rigid.motion;
   }
+  if (const std::optional<Eigen::Isometry3d> back = restick(field, members, now)) {
+    step.model = PoseModel::kabsch;
+    step.stuck_again = true;
+    return *back;
+  }
   if (developed) enterMacroSlip(now, centroid_step);
   return centroid_step;
 }
@@ -213,17 +226,38 @@ void AdaptivePoseEstimator::checkMacroSlip(const contact::ContactField& field, c
   enterMacroSlip(now, increment);
 }
 
-bool AdaptivePoseEstimator::macroSlipEnded(const contact::ContactField& field, const std::vector<int>& members,
-                                           const MarkerField& now) const {
+std::optional<Eigen::Isometry3d> AdaptivePoseEstimator::stickingAgain(const contact::ContactField& field,
+                                                                      const std::vector<int>& members,
+                                                                      const MarkerField& now,
+                                                                      std::vector<int>& sticking) const {
   const int window = t_.window_frames;
-  if (macro_frames_ < window || static_cast<int>(history_.size()) < window) return false;
+  if (static_cast<int>(history_.size()) < window) return std::nullopt;
   const Frame& old = history_[history_.size() - static_cast<size_t>(window)];
-  const RigidFit fit = fitConsecutive(members, old.markers, now, 0);
-  if (!fit.ok) return false;
+  sticking = members;
+  const RigidFit fit = fitConsensus(sticking, old.markers, now, t_.robust_mm, t_.slip_mm);
+  int measured = 0;
+  for (int id : members) measured += old.markers.valid[static_cast<size_t>(id)] && now.valid[static_cast<size_t>(id)];
+  const double needed = std::max<double>(options_.min_thin_stick_markers, options_.restick_fraction * measured);
+  if (!fit.ok || static_cast<double>(sticking.size()) < needed || !spansArea(sticking, now)) return std::nullopt;
   const auto [before, after] = commonFootprints(old, field, members, now);
+  const Eigen::AngleAxisd turn(fit.motion.linear());
+  const Eigen::Vector2d rho = rollingShift(capOf(field, members, now), turn.angle() * turn.axis());
   Eigen::Vector3d lag = after - fit.motion * before;
   lag.z() = 0;
-  return lag.norm() < t_.macro_exit_lag_mm;
+  lag.head<2>() -= rho;
+  if (lag.norm() >= t_.macro_exit_lag_mm) return std::nullopt;
+  return fit.motion * old.pose;
+}
+
+std::optional<Eigen::Isometry3d> AdaptivePoseEstimator::restick(const contact::ContactField& field,
+                                                                const std::vector<int>& members,
+                                                                const MarkerField& now) {
+  std::vector<int> sticking;
+  if (!stickingAgain(field, members, now, sticking)) return std::nullopt;
+  const RigidFit step = fitConsecutive(sticking, history_.back().markers, now, t_.robust_mm);
+  if (!step.ok) return std::nullopt;
+  classifier_.markSticking(sticking, now, step.motion * pose_);
+  return step.motion;
 }
 
 void AdaptivePoseEstimator::remember(const contact::ContactField& field, const MarkerField& now,
@@ -314,19 +348,12 @@ PoseStep AdaptivePoseEstimator::update(const contact::ContactField& field, const
   classifier_.retain(region.markers, now);
 
   Eigen::Isometry3d increment = solveIncrement(field, now, step);
-  if (options_.policy == ModelPolicy::adaptive && !macro_slip_ &&
+  if (options_.policy == ModelPolicy::adaptive && !macro_slip_ && !step.stuck_again &&
       static_cast<int>(region.markers.size()) >= options_.min_macro_markers)
     checkMacroSlip(field, now, region, increment);
+
   increment = limitStep(increment, step.step_limited);
   pose_ = increment * pose_;
-
-  if (macro_slip_) {
-    ++macro_frames_;
-    if (macroSlipEnded(field, region.markers, now)) {
-      macro_slip_ = false;
-      classifier_.markAllSticking(now, pose_);
-    }
-  }
   classifier_.anchorNew(region.markers, now, pose_);
 
   remember(field, now, region);

@@ -23,10 +23,18 @@
 //     between models never makes the output jump.
 //  3. Macroscopic slip is entered when Eq. 16 fails on a developed contact
 //     (at least min_macro_markers region markers) and is held (hysteresis)
-//     until, over the window, the markers' rigid motion carries the footprint
-//     with them again (lag below the exit lag): sliding markers
-//     that creep slower than the slip threshold cannot pull the estimate back
-//     to a stick model that would stall. A slow slide whose markers never
+//     for at least a window. The way back, from macroscopic slip and from
+//     any frame where Eq. 16 fails: over the last window a rigid consensus of
+//     at least restick_fraction of the contact's markers (and no fewer than
+//     min_thin_stick_markers, spanning an area) carries the footprint
+//     (stickingAgain below). The consensus sticks, the others slip, and this
+//     frame's increment is the consensus's own motion since the last frame
+//     (no catch-up over the window). Labels are not the test: judged against
+//     an estimate that stalled, markers that stick again (at a reversal the
+//     whole contact does) never look quiet. Sliding markers that creep slower
+//     than the slip threshold move as one body too, but leave the footprint
+//     behind, so they cannot pull the estimate back to a stick model that
+//     would stall. A slow slide whose markers never
 //     cross the threshold is caught from the footprint: while the finger
 //     sticks, the pressure footprint is carried by the finger. Over the last
 //     window the measured footprint centre is compared with
@@ -48,6 +56,7 @@
 
 #include <Eigen/Geometry>
 #include <deque>
+#include <optional>
 #include <utility>
 
 #include "contact/contact_field.hpp"
@@ -64,6 +73,7 @@ struct PoseStep {
   bool onset = false;            // first frame of a contact (pose = identity)
   bool step_limited = false;     // the increment was scaled down (safety limit)
   bool solver_failed = false;    // Ceres or Kabsch failed; the centroid model stood in
+  bool stuck_again = false;      // the markers stick again (stickingAgain): a stick model took over from the footprint
   PoseModel model = PoseModel::none;
   ContactState state = ContactState::none;
   int region = -1;               // index into ContactField::regions that is tracked
@@ -111,7 +121,20 @@ class AdaptivePoseEstimator {
   void checkMacroSlip(const contact::ContactField& field, const MarkerField& now, const contact::ContactRegion& region,
                       Eigen::Isometry3d& increment);
   void enterMacroSlip(const MarkerField& now, const Eigen::Isometry3d& increment);
-  bool macroSlipEnded(const contact::ContactField& field, const std::vector<int>& members, const MarkerField& now) const;
+  // Sticking markers carry the finger again: over the last window (frame k-w
+  // to k) the markers that moved as one rigid body W (fitConsensus,
+  // anchored_fit.hpp), at least min_thin_stick_markers of them spanning an
+  // area that fixes a general rotation, carry the footprint:
+  // |c_k - W c_{k-w} - rho(W)| < exit lag (x-y), rho the rolling shift
+  // (contact_cap.hpp). Returns the pose that evidence implies, W T_{k-w}
+  // (it replaces the increments a stick-less model made over the window: no
+  // catch-up larger than the markers show), and the consensus in `sticking`.
+  std::optional<Eigen::Isometry3d> stickingAgain(const contact::ContactField& field, const std::vector<int>& members,
+                                                 const MarkerField& now, std::vector<int>& sticking) const;
+  // The increment to stickingAgain's pose, with the consensus labelled stick
+  // and every other marker slip; nullopt (labels untouched) when it does not hold.
+  std::optional<Eigen::Isometry3d> restick(const contact::ContactField& field, const std::vector<int>& members,
+                                           const MarkerField& now);
   std::pair<Eigen::Vector3d, Eigen::Vector3d> commonFootprints(const Frame& before, const contact::ContactField& field,
                                                               const std::vector<int>& members,
                                                               const MarkerField& now) const;

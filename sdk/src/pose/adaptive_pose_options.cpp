@@ -28,6 +28,7 @@ void AdaptivePoseOptions::validate() const {
   requireIn(stick_hold_min_frames, 1, 1000, "stick_hold_min_frames", "");
   requireIn(min_macro_markers, 1, 10000, "min_macro_markers", "");
   requireIn(min_thin_stick_markers, 1, 10000, "min_thin_stick_markers", "");
+  requireIn(restick_fraction, 0.05, 1, "restick_fraction", "");
   requireIn(macro_window_s, 0.01, 2, "macro_window_s", "s");
   requireIn(macro_drift_pitches, 0.001, 2, "macro_drift_pitches", "");
   requireIn(macro_drift_ratio, 0.05, 0.95, "macro_drift_ratio", "");

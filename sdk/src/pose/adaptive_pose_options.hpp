@@ -54,6 +54,10 @@ struct AdaptivePoseOptions {
   // begins are often creeping, and trusting them as the stick half of Ceres hides the slide (3 delays
   // gross slip in the macro-slip test; 300-run campaign: 232 diverged at 4 against 241 without the rule).
   int min_thin_stick_markers = 4;
+  // [0.05, 1] of the contact's markers measured over the window that must move as one rigid body
+  // (and carry the footprint) before a stick model takes over again from the footprint: at a
+  // reversal the whole contact sticks again, in gross slip a few saturated markers can look rigid.
+  double restick_fraction = 0.5;
   double macro_window_s = 0.16;               // [0.01, 2] s
   double macro_drift_pitches = 0.067;         // [0.001, 2]
   double macro_drift_ratio = 0.35;            // [0.05, 0.95] of the footprint's own travel

@@ -67,4 +67,23 @@ RigidFit fitConsecutive(const std::vector<int>& members, const MarkerField& befo
   return robust_mm > 0 ? fitRigidMotionRobust(from, to, robust_mm) : fitRigidMotion(from, to);
 }
 
+RigidFit fitConsensus(std::vector<int>& members, const MarkerField& before, const MarkerField& now, double scale_mm,
+                      double trim_mm) {
+  std::vector<int> ids;
+  std::vector<Eigen::Vector3d> from, to;
+  for (int id : members) {
+    const size_t i = static_cast<size_t>(id);
+    if (!before.valid[i] || !now.valid[i]) continue;
+    ids.push_back(id);
+    from.push_back(before.position[i]);
+    to.push_back(now.position[i]);
+  }
+  members.clear();
+  const TrimmedFit trimmed = fitRigidMotionTrimmed(from, to, {}, scale_mm, trim_mm);
+  if (!trimmed.fit.ok) return trimmed.fit;
+  for (size_t k = 0; k < ids.size(); ++k)
+    if (trimmed.inlier[k]) members.push_back(ids[k]);
+  return trimmed.fit;
+}
+
 }  // namespace onetip::pose

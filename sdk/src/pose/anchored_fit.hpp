@@ -41,4 +41,13 @@ AnchoredFit fitAnchored(const contact::StickSlipClassifier& classifier, const co
 RigidFit fitConsecutive(const std::vector<int>& members, const MarkerField& before, const MarkerField& now,
                         double robust_mm, bool translation_only = false);
 
+// The markers that moved as one rigid body between two marker fields (say a
+// window apart): the least-squares fit over the valid `members`, trimmed one
+// point at a time of residuals above trim_mm (rigid_fit.hpp), then robust with
+// scale_mm. `members` becomes the kept set. Over a window, a sticking marker's
+// residual is measurement noise whatever the motion, a slipping one's grows
+// with its slide, so the kept set is the markers that stuck all along.
+RigidFit fitConsensus(std::vector<int>& members, const MarkerField& before, const MarkerField& now, double scale_mm,
+                      double trim_mm);
+
 }  // namespace onetip::pose

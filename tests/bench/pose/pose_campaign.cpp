@@ -143,16 +143,23 @@ std::vector<ReplayFrame> runField(const Recording& rec, double& median_ms) {
 
 void writeTrace(const std::vector<ReplayFrame>& frames, const std::string& path) {
   std::vector<std::string> h = {"frame", "t", "gt_contact", "gt_state", "contact", "state", "model",
-                                "region_markers", "n_stick", "n_slip", "gt_stick", "stick_true"};
+                                "region_markers", "gt_contact_markers", "region_in_contact", "n_stick", "n_slip",
+                                "gt_stick", "stick_true"};
   for (const char* axis : {"dx", "dy", "dz", "yaw", "pitch", "roll"}) h.push_back(std::string("gt_") + axis);
   for (const char* axis : {"dx", "dy", "dz", "yaw", "pitch", "roll"}) h.push_back(axis);
   CsvWriter out(path, h);
   for (size_t k = 0; k < frames.size(); ++k) {
     const ReplayFrame& f = frames[k];
+    int touching = 0, region_touching = 0;
+    for (size_t i = 0; i < f.gt_contact_markers.size(); ++i) {
+      touching += f.gt_contact_markers[i] ? 1 : 0;
+      region_touching += f.gt_contact_markers[i] && i < f.region.size() && f.region[i] ? 1 : 0;
+    }
     std::vector<std::string> r = {std::to_string(k), num(f.t), f.gt_contact ? "1" : "0",
                                   std::string(toString(f.gt_state)), f.contact ? "1" : "0",
                                   std::string(toString(f.state)), std::string(pose::toString(f.model)),
-                                  std::to_string(f.region_markers), std::to_string(f.n_stick),
+                                  std::to_string(f.region_markers), std::to_string(touching),
+                                  std::to_string(region_touching), std::to_string(f.n_stick),
                                   std::to_string(f.n_slip), std::to_string(countTrulySticking(f)),
                                   std::to_string(countLabelledTrulySticking(f))};
     for (double v : f.gt.asArray()) r.push_back(num(v));
@@ -172,6 +179,7 @@ int main(int argc, char** argv) {
     else rs.scenario = sim::loadScenario(args.trace_scenario);
     ReplayOptions o;
     o.noise_mm = kFieldNoisePerGreyMm * rs.conditions.noise_grey;
+    if (args.trace >= 0) o.seed = static_cast<unsigned>(args.trace);  // the campaign's noise, frame for frame
     double ms = 0;
     const auto frames = runField(record(rs.scenario, o), ms);
     writeTrace(frames, args.trace_out);
