@@ -239,9 +239,16 @@ std::optional<Eigen::Isometry3d> AdaptivePoseEstimator::stickingAgain(const cont
   for (int id : members) measured += old.markers.valid[static_cast<size_t>(id)] && now.valid[static_cast<size_t>(id)];
   const double needed = std::max<double>(options_.min_thin_stick_markers, options_.restick_fraction * measured);
   if (!fit.ok || static_cast<double>(sticking.size()) < needed || !spansArea(sticking, now)) return std::nullopt;
-  const auto [before, after] = commonFootprints(old, field, members, now);
+  // Rolling moves the footprint over the finger by rho (contact_cap.hpp), but
+  // only a turn beyond what the trim lets a non-rigid set fake (slip threshold
+  // over the consensus's smaller extent) is credited: saturated markers of a
+  // slide drift that much and would explain the slide away as a roll.
+  std::vector<Eigen::Vector3d> kept;
+  for (int id : sticking) kept.push_back(now.position[static_cast<size_t>(id)]);
   const Eigen::AngleAxisd turn(fit.motion.linear());
-  const Eigen::Vector2d rho = rollingShift(capOf(field, members, now), turn.angle() * turn.axis());
+  const double vouched = std::max(0.0, turn.angle() - t_.slip_mm / planarSpread(kept).x());
+  const auto [before, after] = commonFootprints(old, field, members, now);
+  const Eigen::Vector2d rho = rollingShift(capOf(field, members, now), vouched * turn.axis());
   Eigen::Vector3d lag = after - fit.motion * before;
   lag.z() = 0;
   lag.head<2>() -= rho;

@@ -125,8 +125,10 @@ class AdaptivePoseEstimator {
   // to k) the markers that moved as one rigid body W (fitConsensus,
   // anchored_fit.hpp), at least min_thin_stick_markers of them spanning an
   // area that fixes a general rotation, carry the footprint:
-  // |c_k - W c_{k-w} - rho(W)| < exit lag (x-y), rho the rolling shift
-  // (contact_cap.hpp). Returns the pose that evidence implies, W T_{k-w}
+  // |c_k - W c_{k-w} - rho| < exit lag (x-y), rho the rolling shift
+  // (contact_cap.hpp) of the part of W's turn beyond slip threshold / the
+  // consensus's smaller x-y extent (a turn the trim could let a non-rigid set
+  // fake is not credited: a slide's saturated markers drift that much). Returns the pose that evidence implies, W T_{k-w}
   // (it replaces the increments a stick-less model made over the window: no
   // catch-up larger than the markers show), and the consensus in `sticking`.
   std::optional<Eigen::Isometry3d> stickingAgain(const contact::ContactField& field, const std::vector<int>& members,

@@ -41,11 +41,13 @@ struct Args {
   long trace = -1;
   std::string trace_scenario;
   std::string trace_out = "campaign_trace.csv";
+  double trace_noise_mm = -1;  // < 0: the run's own (the campaign's noise per grey level)
 };
 
 constexpr const char* kUsage =
     "usage: pose_campaign --out runs.csv [--runs N] [--image-runs M] [--image-max-frames F] [--first-seed S]\n"
-    "       pose_campaign (--trace SEED | --trace-scenario FILE.yaml) [--trace-out frames.csv]\n";
+    "       pose_campaign (--trace SEED | --trace-scenario FILE.yaml) [--trace-out frames.csv]\n"
+    "                     [--trace-noise-mm SIGMA]  (marker noise per axis; the estimator is told it as its prior)\n";
 
 [[noreturn]] void usageError(const std::string& why) {
   std::fprintf(stderr, "pose_campaign: %s\n%s", why.c_str(), kUsage);
@@ -70,6 +72,7 @@ Args parse(int argc, char** argv) {
     else if (k == "--trace") a.trace = std::stol(v);
     else if (k == "--trace-scenario") a.trace_scenario = v;
     else if (k == "--trace-out") a.trace_out = v;
+    else if (k == "--trace-noise-mm") a.trace_noise_mm = std::stod(v);
     else usageError("unknown option " + k);
   }
   if (a.out.empty() && a.trace < 0 && a.trace_scenario.empty()) usageError("--out is required for a campaign");
@@ -120,8 +123,7 @@ std::vector<std::string> row(const char* level, const sim::RandomConditions& c, 
 }
 
 // Field level: the tracker over the noisy marker fields, timed per frame.
-std::vector<ReplayFrame> runField(const Recording& rec, double& median_ms) {
-  input::PoseTrackerOptions options;
+std::vector<ReplayFrame> runField(const Recording& rec, input::PoseTrackerOptions options, double& median_ms) {
   options.marker_depth_mm = rec.marker_depth_mm;  // the pad's, as the pipeline takes it from the pattern
   input::PoseTracker tracker(options);
   std::vector<ReplayFrame> frames;
@@ -180,8 +182,12 @@ int main(int argc, char** argv) {
     ReplayOptions o;
     o.noise_mm = kFieldNoisePerGreyMm * rs.conditions.noise_grey;
     if (args.trace >= 0) o.seed = static_cast<unsigned>(args.trace);  // the campaign's noise, frame for frame
+    if (args.trace_noise_mm >= 0) {  // as the single-axis noise sweep (pose_accuracy_table) runs it
+      o.noise_mm = args.trace_noise_mm;
+      o.tracker.pose.self.prior_noise_mm = std::max(args.trace_noise_mm, 1e-5);
+    }
     double ms = 0;
-    const auto frames = runField(record(rs.scenario, o), ms);
+    const auto frames = runField(record(rs.scenario, o), o.tracker, ms);
     writeTrace(frames, args.trace_out);
     const RunScore s = scoreRun(frames);
     std::printf("%s: diverged %d (longest %d from frame %d)\n", rs.scenario.name.c_str(), s.diverged,
@@ -197,7 +203,7 @@ int main(int argc, char** argv) {
     o.noise_mm = kFieldNoisePerGreyMm * rs.conditions.noise_grey;
     o.seed = seed;
     double ms = 0;
-    const RunScore s = scoreRun(runField(record(rs.scenario, o), ms));
+    const RunScore s = scoreRun(runField(record(rs.scenario, o), o.tracker, ms));
     diverged += s.diverged ? 1 : 0;
     out.row(row("field", rs.conditions, o.noise_mm, s, ms, 0));
     if (image_done < args.image_runs && rs.scenario.defaultFrameCount() <= args.image_max_frames) {
