@@ -252,7 +252,7 @@ std::optional<Eigen::Isometry3d> AdaptivePoseEstimator::stickingAgain(const cont
   Eigen::Vector3d lag = after - fit.motion * before;
   lag.z() = 0;
   lag.head<2>() -= rho;
-  if (lag.norm() >= t_.macro_exit_lag_mm) return std::nullopt;
+  if (lag.norm() >= t_.macro_exit_lag_mm + options_.macro_drift_ratio * rho.norm()) return std::nullopt;
   return fit.motion * old.pose;
 }
 

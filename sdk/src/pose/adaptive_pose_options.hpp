@@ -60,7 +60,8 @@ struct AdaptivePoseOptions {
   double restick_fraction = 0.5;
   double macro_window_s = 0.16;               // [0.01, 2] s
   double macro_drift_pitches = 0.067;         // [0.001, 2]
-  double macro_drift_ratio = 0.35;            // [0.05, 0.95] of the footprint's own travel
+  double macro_drift_ratio = 0.35;            // [0.05, 0.95] of the footprint's own travel (and of the rolling
+                                              // shift, in the way back's footprint test)
   double macro_tilt_gate_deg = 1.5;           // [0.01, 90] no decision while the finger tilts this much in the window
   double macro_size_change = 0.3;             // [0.01, 10] no decision while the region size changes this fraction
   int macro_confirm = 2;                      // [1, 100] consecutive frames the drift must be seen
