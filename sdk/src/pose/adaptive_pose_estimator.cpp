@@ -248,7 +248,8 @@ std::optional<Eigen::Isometry3d> AdaptivePoseEstimator::stickingAgain(const cont
   const Eigen::AngleAxisd turn(fit.motion.linear());
   const double vouched = std::max(0.0, turn.angle() - t_.slip_mm / planarSpread(kept).x());
   const auto [before, after] = commonFootprints(old, field, members, now);
-  const Eigen::Vector2d rho = rollingShift(capOf(field, members, now), vouched * turn.axis());
+  const Eigen::Vector2d rho =
+      vouched > 0 ? rollingShift(capOf(field, members, now), vouched * turn.axis()) : Eigen::Vector2d::Zero();
   Eigen::Vector3d lag = after - fit.motion * before;
   lag.z() = 0;
   lag.head<2>() -= rho;
