@@ -202,7 +202,9 @@ TEST(FailurePoints, AReversalAfterSlipSticksAgain) {
     for (size_t a = 0; a < 6; ++a) worst[a] = std::max(worst[a], std::abs(e[a] - g[a]));
     if (k >= 62 && k < 90 && f.model != pose::PoseModel::centroid) ++stick_model_after_reversal;
   }
+  // Bounds: the campaign's divergence threshold in mm and the paper's worst 2.6 deg (measured here 0.48 mm
+  // at frame 252, in a later slip, and 1.3 deg; without the way back 3.3 mm and 24 deg).
   EXPECT_GT(stick_model_after_reversal, 20);
-  for (size_t a = 0; a < 3; ++a) EXPECT_LT(worst[a], 0.5) << "axis " << a;
-  for (size_t a = 3; a < 6; ++a) EXPECT_LT(worst[a], 2.0) << "axis " << a;
+  for (size_t a = 0; a < 3; ++a) EXPECT_LT(worst[a], 1.0) << "axis " << a;
+  for (size_t a = 3; a < 6; ++a) EXPECT_LT(worst[a], 2.6) << "axis " << a;
 }
