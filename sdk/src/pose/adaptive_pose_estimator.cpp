@@ -233,11 +233,12 @@ std::optional<Eigen::Isometry3d> AdaptivePoseEstimator::stickingAgain(const cont
   const int window = t_.window_frames;
   if (static_cast<int>(history_.size()) < window) return std::nullopt;
   const Frame& old = history_[history_.size() - static_cast<size_t>(window)];
-  sticking = members;
-  const RigidFit fit = fitConsensus(sticking, old.markers, now, t_.robust_mm, t_.slip_mm);
   int measured = 0;
   for (int id : members) measured += old.markers.valid[static_cast<size_t>(id)] && now.valid[static_cast<size_t>(id)];
   const double needed = std::max<double>(options_.min_thin_stick_markers, options_.restick_fraction * measured);
+  sticking = members;
+  const RigidFit fit = fitConsensus(sticking, old.markers, now, t_.robust_mm, t_.slip_mm,
+                                    static_cast<size_t>(std::ceil(needed)));
   if (!fit.ok || static_cast<double>(sticking.size()) < needed || !spansArea(sticking, now)) return std::nullopt;
   // Rolling moves the footprint over the finger by rho (contact_cap.hpp), but
   // only a turn beyond what the trim lets a non-rigid set fake (slip threshold

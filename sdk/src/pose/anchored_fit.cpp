@@ -68,7 +68,7 @@ RigidFit fitConsecutive(const std::vector<int>& members, const MarkerField& befo
 }
 
 RigidFit fitConsensus(std::vector<int>& members, const MarkerField& before, const MarkerField& now, double scale_mm,
-                      double trim_mm) {
+                      double trim_mm, size_t min_kept) {
   std::vector<int> ids;
   std::vector<Eigen::Vector3d> from, to;
   for (int id : members) {
@@ -79,8 +79,8 @@ RigidFit fitConsensus(std::vector<int>& members, const MarkerField& before, cons
     to.push_back(now.position[i]);
   }
   members.clear();
-  const TrimmedFit trimmed = fitRigidMotionTrimmed(from, to, {}, scale_mm, trim_mm);
-  if (!trimmed.fit.ok) return trimmed.fit;
+  const TrimmedFit trimmed = fitRigidMotionTrimmed(from, to, {}, scale_mm, trim_mm, min_kept);
+  if (!trimmed.fit.ok || !trimmed.within_trim) return RigidFit{};
   for (size_t k = 0; k < ids.size(); ++k)
     if (trimmed.inlier[k]) members.push_back(ids[k]);
   return trimmed.fit;

@@ -1,5 +1,7 @@
 #include "pose/rigid_fit.hpp"
 
+#include <algorithm>
+
 #include <Eigen/Eigenvalues>
 #include <Eigen/SVD>
 #include <cmath>
@@ -56,7 +58,8 @@ RigidFit fitRigidMotionRobust(const std::vector<Eigen::Vector3d>& from, const st
 }
 
 TrimmedFit fitRigidMotionTrimmed(const std::vector<Eigen::Vector3d>& from, const std::vector<Eigen::Vector3d>& to,
-                                 const std::vector<Eigen::Vector3d>& relax, double scale_mm, double trim_mm) {
+                                 const std::vector<Eigen::Vector3d>& relax, double scale_mm, double trim_mm,
+                                 size_t min_kept) {
   TrimmedFit out;
   out.inlier.assign(from.size(), 1);
   std::vector<size_t> kept(from.size());
@@ -70,7 +73,7 @@ TrimmedFit fitRigidMotionTrimmed(const std::vector<Eigen::Vector3d>& from, const
       b.push_back(to[i]);
     }
     out.fit = fitRigidMotion(a, b);
-    if (!out.fit.ok || kept.size() <= 3) break;
+    if (!out.fit.ok || kept.size() <= std::max<size_t>(3, min_kept)) break;
     // While some residual exceeds trim_mm: the most lagging point if it lags
     // by more than a quarter of the largest residual, else the largest residual.
     long worst = -1, most_lagging = -1;
@@ -92,7 +95,10 @@ TrimmedFit fitRigidMotionTrimmed(const std::vector<Eigen::Vector3d>& from, const
     out.inlier[kept[static_cast<size_t>(drop)]] = 0;
     kept.erase(kept.begin() + drop);
   }
-  if (out.fit.ok) out.fit = fitRigidMotionRobust(a, b, scale_mm);
+  if (!out.fit.ok) return out;
+  out.within_trim = true;
+  for (size_t k = 0; k < a.size(); ++k) out.within_trim &= (b[k] - out.fit.motion * a[k]).norm() <= trim_mm;
+  out.fit = fitRigidMotionRobust(a, b, scale_mm);
   return out;
 }
 

@@ -57,10 +57,14 @@ RigidFit fitRigidMotionRobust(const std::vector<Eigen::Vector3d>& from, const st
 struct TrimmedFit {
   RigidFit fit;
   std::vector<std::uint8_t> inlier;  // per point: kept in the final fit
+  bool within_trim = false;          // every kept point's least-squares residual is within trim_mm
 };
-// `relax` may be empty (no direction preferred).
+// `relax` may be empty (no direction preferred). Trimming also stops once
+// `min_kept` points remain (a caller that needs that many stops paying for
+// refits that cannot succeed; within_trim then tells whether they sufficed).
 TrimmedFit fitRigidMotionTrimmed(const std::vector<Eigen::Vector3d>& from, const std::vector<Eigen::Vector3d>& to,
-                                 const std::vector<Eigen::Vector3d>& relax, double scale_mm, double trim_mm);
+                                 const std::vector<Eigen::Vector3d>& relax, double scale_mm, double trim_mm,
+                                 size_t min_kept = 0);
 RigidFit fitTranslation(const std::vector<Eigen::Vector3d>& from, const std::vector<Eigen::Vector3d>& to);
 RigidFit fitRotationAboutZ(const std::vector<Eigen::Vector3d>& from, const std::vector<Eigen::Vector3d>& to);
 Eigen::Vector2d planarSpread(const std::vector<Eigen::Vector3d>& points);

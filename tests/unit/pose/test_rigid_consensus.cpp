@@ -82,6 +82,21 @@ TEST(RigidConsensus, KeepsTheMarkersThatMovedAsOneBodyAndTheirMotion) {
   }
 }
 
+TEST(RigidConsensus, ABodySmallerThanTheCountNeededIsNoConsensus) {
+  // Trimming stops once the needed count remains: the body that stuck is found when it is that large,
+  // and no consensus (members empty) when it is smaller.
+  std::mt19937 rng(17);
+  const MarkerField before = grid();
+  const Moved m = move(before, rigidFromTranslationYawPitchRoll({0.2, -0.1, 0.05}, 0.01, 0.0, 0.02), 0.3, rng);
+  const size_t body = static_cast<size_t>(kRows * kCols) - m.sliders.size();
+  std::vector<int> kept = allIds();
+  EXPECT_TRUE(pose::fitConsensus(kept, before, m.now, 4 * kNoiseMm, kTrimMm, body).ok);
+  EXPECT_EQ(kept.size(), body);
+  kept = allIds();
+  EXPECT_FALSE(pose::fitConsensus(kept, before, m.now, 4 * kNoiseMm, kTrimMm, body + 1).ok);
+  EXPECT_TRUE(kept.empty());
+}
+
 TEST(RigidConsensus, MarkersNotMeasuredInEitherFieldAreNotKept) {
   std::mt19937 rng(5);
   MarkerField before = grid();
