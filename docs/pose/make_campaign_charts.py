@@ -137,9 +137,10 @@ def accuracy_time_chart(data, out_dir):
     a2.set_xlabel("contact + pose per frame, median (ms)")
     a1.set_ylabel("median of the runs' worst translation RMSE (mm)")
     a2.set_ylabel("median of the runs' worst rotation RMSE (deg)")
-    a1.legend(fontsize=8)
-    fig.suptitle("Accuracy against time per frame, per contact model (field level)")
-    fig.tight_layout()
+    fig.legend(*a1.get_legend_handles_labels(), fontsize=8, loc="lower center", ncol=2)
+    fig.suptitle("Accuracy against time per frame, per contact model (field level; times as the campaign ran,\n"
+                 "on a shared machine: bench_pose, alternating binaries, is the speed figure)")
+    fig.tight_layout(rect=(0, 0.12, 1, 1))
     fig.savefig(os.path.join(out_dir, "campaign_accuracy_time.png"), dpi=80)
     plt.close(fig)
 
