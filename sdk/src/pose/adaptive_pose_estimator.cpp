@@ -226,12 +226,10 @@ void AdaptivePoseEstimator::checkMacroSlip(const contact::ContactField& field, c
   enterMacroSlip(now, increment);
 }
 
-std::optional<Eigen::Isometry3d> AdaptivePoseEstimator::stickingAgain(const contact::ContactField& field,
-                                                                      const std::vector<int>& members,
-                                                                      const MarkerField& now,
-                                                                      std::vector<int>& sticking) const {
+bool AdaptivePoseEstimator::stickingAgain(const contact::ContactField& field, const std::vector<int>& members,
+                                          const MarkerField& now, std::vector<int>& sticking) const {
   const int window = t_.window_frames;
-  if (static_cast<int>(history_.size()) < window) return std::nullopt;
+  if (static_cast<int>(history_.size()) < window) return false;
   const Frame& old = history_[history_.size() - static_cast<size_t>(window)];
   int measured = 0;
   for (int id : members) measured += old.markers.valid[static_cast<size_t>(id)] && now.valid[static_cast<size_t>(id)];
@@ -239,7 +237,7 @@ std::optional<Eigen::Isometry3d> AdaptivePoseEstimator::stickingAgain(const cont
   sticking = members;
   const RigidFit fit = fitConsensus(sticking, old.markers, now, t_.robust_mm, t_.slip_mm,
                                     static_cast<size_t>(std::ceil(needed)));
-  if (!fit.ok || static_cast<double>(sticking.size()) < needed || !spansArea(sticking, now)) return std::nullopt;
+  if (!fit.ok || static_cast<double>(sticking.size()) < needed || !spansArea(sticking, now)) return false;
   // Rolling moves the footprint over the finger by rho (contact_cap.hpp), but
   // only a turn beyond what the trim lets a non-rigid set fake (slip threshold
   // over the consensus's smaller extent) is credited: saturated markers of a
@@ -254,8 +252,7 @@ std::optional<Eigen::Isometry3d> AdaptivePoseEstimator::stickingAgain(const cont
   Eigen::Vector3d lag = after - fit.motion * before;
   lag.z() = 0;
   lag.head<2>() -= rho;
-  if (lag.norm() >= t_.macro_exit_lag_mm + options_.macro_drift_ratio * rho.norm()) return std::nullopt;
-  return fit.motion * old.pose;
+  return lag.norm() < t_.macro_exit_lag_mm + options_.macro_drift_ratio * rho.norm();
 }
 
 std::optional<Eigen::Isometry3d> AdaptivePoseEstimator::restick(const contact::ContactField& field,

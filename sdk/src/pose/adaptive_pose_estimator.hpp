@@ -123,21 +123,23 @@ class AdaptivePoseEstimator {
   void enterMacroSlip(const MarkerField& now, const Eigen::Isometry3d& increment);
   // Sticking markers carry the finger again: over the last window (frame k-w
   // to k) the markers that moved as one rigid body W (fitConsensus,
-  // anchored_fit.hpp), at least min_thin_stick_markers of them spanning an
-  // area that fixes a general rotation, carry the footprint:
+  // anchored_fit.hpp), at least restick_fraction of the contact's measured
+  // markers and min_thin_stick_markers, spanning an area that fixes a general
+  // rotation, carry the footprint:
   // |c_k - W c_{k-w} - rho| < exit lag + macro_drift_ratio |rho| (x-y), rho
   // the rolling shift (contact_cap.hpp) of the part of W's turn beyond slip
   // threshold / the consensus's smaller x-y extent (a turn the trim could let
   // a non-rigid set fake is not credited: a slide's saturated markers drift
   // that much). The tolerance grows with rho because rho is read from the
   // dimple, not the finger: at a rolling reversal in the campaign's seed 47,
-  // 0.07-0.12 mm of lag remained beside a rho of 0.29-0.35 mm. Returns the pose that evidence implies, W T_{k-w}
-  // (it replaces the increments a stick-less model made over the window: no
-  // catch-up larger than the markers show), and the consensus in `sticking`.
-  std::optional<Eigen::Isometry3d> stickingAgain(const contact::ContactField& field, const std::vector<int>& members,
-                                                 const MarkerField& now, std::vector<int>& sticking) const;
-  // The increment to stickingAgain's pose, with the consensus labelled stick
-  // and every other marker slip; nullopt (labels untouched) when it does not hold.
+  // 0.07-0.12 mm of lag remained beside a rho of 0.29-0.35 mm. The consensus
+  // is left in `sticking`.
+  bool stickingAgain(const contact::ContactField& field, const std::vector<int>& members, const MarkerField& now,
+                     std::vector<int>& sticking) const;
+  // When stickingAgain holds: the consensus labelled stick, every other marker
+  // slip, and the increment the consensus's own motion since the last frame
+  // (none over the window: a window straddling a reversal holds slide as well
+  // as stick). nullopt (labels untouched) when it does not hold.
   std::optional<Eigen::Isometry3d> restick(const contact::ContactField& field, const std::vector<int>& members,
                                            const MarkerField& now);
   std::pair<Eigen::Vector3d, Eigen::Vector3d> commonFootprints(const Frame& before, const contact::ContactField& field,
