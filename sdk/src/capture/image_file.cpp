@@ -111,15 +111,13 @@ std::optional<Declared> tiffSize(const std::uint8_t* d, std::size_t n) {
 
 std::string sizeText(cv::Size s) { return std::to_string(s.width) + "x" + std::to_string(s.height); }
 
-}  // namespace
-
-namespace {
 std::optional<Declared> declaredImage(const std::uint8_t* data, std::size_t bytes) {
   if (!data) return std::nullopt;
   for (auto reader : {pngSize, jpegSize, bmpSize, tiffSize})
     if (auto s = reader(data, bytes)) return s;
   return std::nullopt;
 }
+
 }  // namespace
 
 std::optional<cv::Size> declaredImageSize(const std::uint8_t* data, std::size_t bytes) {

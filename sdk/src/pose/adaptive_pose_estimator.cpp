@@ -237,15 +237,17 @@ bool AdaptivePoseEstimator::stickingAgain(const contact::ContactField& field, co
   sticking = members;
   const RigidFit fit = fitConsensus(sticking, old.markers, now, t_.robust_mm, t_.slip_mm,
                                     static_cast<size_t>(std::ceil(needed)));
-  if (!fit.ok || static_cast<double>(sticking.size()) < needed || !spansArea(sticking, now)) return false;
+  if (!fit.ok || static_cast<double>(sticking.size()) < needed) return false;
+  std::vector<Eigen::Vector3d> kept;  // all valid in `now` (fitConsensus keeps only those)
+  for (int id : sticking) kept.push_back(now.position[static_cast<size_t>(id)]);
+  const double extent = kept.size() >= 3 ? planarSpread(kept).x() : 0.0;  // as spansArea, computed once
+  if (extent < t_.min_spread_mm) return false;
   // Rolling moves the footprint over the finger by rho (contact_cap.hpp), but
   // only a turn beyond what the trim lets a non-rigid set fake (slip threshold
   // over the consensus's smaller extent) is credited: saturated markers of a
   // slide drift that much and would explain the slide away as a roll.
-  std::vector<Eigen::Vector3d> kept;
-  for (int id : sticking) kept.push_back(now.position[static_cast<size_t>(id)]);
   const Eigen::AngleAxisd turn(fit.motion.linear());
-  const double vouched = std::max(0.0, turn.angle() - t_.slip_mm / planarSpread(kept).x());
+  const double vouched = std::max(0.0, turn.angle() - t_.slip_mm / extent);
   const auto [before, after] = commonFootprints(old, field, members, now);
   const Eigen::Vector2d rho =
       vouched > 0 ? rollingShift(capOf(field, members, now), vouched * turn.axis()) : Eigen::Vector2d::Zero();

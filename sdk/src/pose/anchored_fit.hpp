@@ -47,7 +47,8 @@ RigidFit fitConsecutive(const std::vector<int>& members, const MarkerField& befo
 // scale_mm. `members` becomes the kept set. Over a window, a sticking marker's
 // residual is measurement noise whatever the motion, a slipping one's grows
 // with its slide, so the kept set is the markers that stuck all along.
-// Not ok (and `members` empty) when fewer than `min_kept` markers would stay.
+// Not ok (and `members` empty) unless at least max(min_kept, 3) markers fit
+// within trim_mm.
 RigidFit fitConsensus(std::vector<int>& members, const MarkerField& before, const MarkerField& now, double scale_mm,
                       double trim_mm, size_t min_kept = 0);
 

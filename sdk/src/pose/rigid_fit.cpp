@@ -1,9 +1,8 @@
 #include "pose/rigid_fit.hpp"
 
-#include <algorithm>
-
 #include <Eigen/Eigenvalues>
 #include <Eigen/SVD>
+#include <algorithm>
 #include <cmath>
 
 namespace onetip::pose {

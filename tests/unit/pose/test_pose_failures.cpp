@@ -182,7 +182,7 @@ TEST(FailurePoints, ATiltingPlateIsNotReadAsASlide) {
 }
 
 TEST(FailurePoints, AReversalAfterSlipSticksAgain) {
-  // The campaign's random run 25 (halfspace, 15x15, a finger at 50 fps, 0.45 um of noise): the finger
+  // The campaign's random run 25 (halfspace, 15x15, a finger at 50 fps, 0.48 um of noise): the finger
   // presses, slides and rolls until few markers stick, then reverses (frame 62), and 24-28 markers
   // stick again. Judged against the labels the stalled estimate made, the classifier never let them
   // stick (the estimate froze roll and pitch for the rest of the contact: 24 deg and 23 deg off);
