@@ -180,8 +180,26 @@ std::vector<Corner> CornerDetector::detect(const cv::Mat& grey) const {
 std::optional<Corner> CornerDetector::detectNear(const cv::Mat& grey, cv::Point2f guess, float search_radius_px) const {
   checkImage(grey);
   auto found = searchNear(stage_, grey, guess, search_radius_px);
-  if (!found && search_radius_px <= options_.fine_search_px) found = searchNear(fine_, grey, guess, search_radius_px);
+  if (!found && options_.fine_search_px > 0)
+    found = searchNear(fine_, grey, guess, std::min(search_radius_px, options_.fine_search_px));
   return found;
+}
+
+void CornerDetector::prefetchNear(const cv::Mat& grey, const std::vector<cv::Point2f>& guesses) const noexcept {
+  if (grey.empty() || grey.type() != CV_8UC1) return;
+  const int reach = static_cast<int>(std::ceil(std::max(options_.outer_radius_px, options_.subpixel.half_window + 1.0f))) + 1;
+  for (const cv::Point2f& g : guesses) {
+    if (!(std::isfinite(g.x) && std::isfinite(g.y))) continue;
+    const int cx = static_cast<int>(std::clamp(g.x, 0.0f, static_cast<float>(grey.cols - 1)));
+    const int cy = static_cast<int>(std::clamp(g.y, 0.0f, static_cast<float>(grey.rows - 1)));
+    const int x0 = std::max(cx - reach, 0), x1 = std::min(cx + reach, grey.cols - 1);
+    const int y0 = std::max(cy - reach, 0), y1 = std::min(cy + reach, grey.rows - 1);
+    for (int y = y0; y <= y1; ++y) {
+      const unsigned char* row = grey.ptr<unsigned char>(y);
+      __builtin_prefetch(row + x0);
+      __builtin_prefetch(row + x1);
+    }
+  }
 }
 
 std::optional<Corner> CornerDetector::searchNear(const Stage& stage, const cv::Mat& grey, cv::Point2f guess,

@@ -15,13 +15,15 @@
 //  4. non-maximum suppression: of corners closer than min_separation_px the
 //     best score wins.
 // detectNear (tracking) falls back to a fine stage when the default one finds
-// nothing and the search radius is at most fine_search_px (the tracker's
-// radius is 0.4 x the shortest predicted link, so a small radius means a
-// foreshortened square): rings of fine_inner/outer_radius_px and a refinement
-// window of fine_half_window. Where the pad dips steeply at the edge of a deep
-// press a square is foreshortened to ~10 px along one axis, and with blur the
+// nothing, searching within min(search radius, fine_search_px) of the guess:
+// rings of fine_inner/outer_radius_px and a refinement window of
+// fine_half_window. Where the pad dips steeply at the edge of a deep press a
+// square is foreshortened to ~10 px along one axis, and with blur the
 // default 5 px ring and 11 px window take in the next corner's edges, so the
-// ring test fails there; the fine stage sees only the corner itself.
+// ring test fails there; the fine stage sees only the corner itself. (The
+// tracker's radius is 0.4 x the shortest predicted link; with 1.2 px of blur
+// the default stage also fails at links of 16-17 px, so the fine stage is
+// tried after every failure, not only for small radii.)
 // Each corner also carries its two edge directions and which sector pair is
 // dark (angles in radians, image axes x right, y down, modulo pi), which the
 // grid builder uses to link neighbours.
@@ -48,7 +50,7 @@ struct CornerDetectorOptions {
   float min_phase_agreement = 0.8f;  // fraction of angles where both rings agree
   float min_separation_px = 4.0f;  // non-maximum suppression distance
   SubpixelOptions subpixel;        // refinement
-  float fine_search_px = 6.0f;     // detectNear: fine stage for search radii up to this (0: never)
+  float fine_search_px = 6.0f;     // detectNear: the fine stage's search radius, pixels (0: no fine stage)
   float fine_inner_radius_px = 2.0f;
   float fine_outer_radius_px = 3.5f;
   int fine_half_window = 3;        // the fine stage's refinement half window
@@ -72,10 +74,16 @@ class CornerDetector {
   std::vector<Corner> detect(const cv::Mat& grey) const;
 
   // The corner nearest `guess` within search_radius_px, refined and verified
-  // by the ring test (the fine stage as a fallback for a small radius, see
-  // above), or nothing. For tracking: no full-image pass.
+  // by the ring test (the fine stage as a fallback, see above), or nothing.
+  // For tracking: no full-image pass.
   std::optional<Corner> detectNear(const cv::Mat& grey, cv::Point2f guess,
                                    float search_radius_px) const;
+
+  // A hint, with no effect on any result: asks the memory system for the
+  // pixels detectNear reads around each guess (the refinement window and the
+  // rings), all at once. A frame fresh from the camera is not in the cache;
+  // fetched marker by marker, every window costs a chain of misses.
+  void prefetchNear(const cv::Mat& grey, const std::vector<cv::Point2f>& guesses) const noexcept;
 
   const CornerDetectorOptions& options() const noexcept { return options_; }
 

@@ -28,6 +28,43 @@ LinkCheck checkLinks(const LatticeView& now, const LatticeView& before, int r, i
   return out;
 }
 
+std::optional<float> cellMargin(const LatticeView& grid, int r, int c, cv::Point2f p) {
+  constexpr int kDir[4][2] = {{0, 1}, {1, 0}, {0, -1}, {-1, 0}};  // cyclic: right, down, left, up
+  cv::Point2f v[4];
+  bool have[4] = {false, false, false, false};
+  int count = 0;
+  for (int k = 0; k < 4; ++k) {
+    const int nr = r + kDir[k][0], nc = c + kDir[k][1];
+    if (grid.has(nr, nc)) {
+      v[k] = grid.at(nr, nc), have[k] = true, ++count;
+    } else if (nr >= 0 && nc >= 0 && nr < grid.rows && nc < grid.cols) {
+      return std::nullopt;  // a neighbour not measured: its corner may lie anywhere on that side
+    }
+  }
+  if (count < 3) return std::nullopt;
+  // (r, c) where its neighbours put it: the mean of the opposite pairs' midpoints.
+  cv::Point2f centre(0, 0);
+  int pairs = 0;
+  for (int k = 0; k < 2; ++k)
+    if (have[k] && have[k + 2]) centre += 0.5f * (v[k] + v[k + 2]), ++pairs;
+  centre *= 1.0f / static_cast<float>(pairs);
+  float margin = 1.0f, turn = 0.0f;
+  for (int k = 0; k < 4; ++k) {
+    const int j = (k + 1) % 4, l = (k + 2) % 4;
+    if (!have[k] || !have[j]) continue;
+    const cv::Point2f edge = v[j] - v[k];
+    const auto inner = static_cast<float>(edge.cross(centre - v[k]));  // the centre's side, times |edge|
+    if (have[l]) {
+      const auto bend = static_cast<float>(edge.cross(v[l] - v[j]));
+      if (bend == 0.0f || bend * turn < 0.0f || bend * inner <= 0.0f) return std::nullopt;  // not convex
+      turn = bend;
+    }
+    if (inner == 0.0f) return std::nullopt;
+    margin = std::min(margin, static_cast<float>(edge.cross(p - v[k])) / inner);
+  }
+  return margin;
+}
+
 bool hasSeam(const ViewMarkers& m, float stretch, const CornerFinder& near) {
   const auto length2 = [&](int r, int c, int dr, int dc) {
     if (!m.has(r, c) || !m.has(r + dr, c + dc)) return -1.0f;

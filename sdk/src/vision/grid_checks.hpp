@@ -10,10 +10,23 @@
 // along its lattice line), or a link longer than `stretch` x both of those
 // with a corner at its middle (the corner the slipped ids skipped; the middle
 // of a true link is the middle of a square's edge, where no corner can be).
+// cellMargin: where p lies in the cell of (r, c), the quadrilateral of its
+// four neighbours (right, down, left, up) in `grid`: for each edge, p's signed
+// distance to it over that of the point the neighbours put (r, c) at (the
+// mean of the opposite pairs' midpoints); the smallest of these. A
+// checkerboard's image is a continuous one-to-one map of its lattice, so the
+// only corner inside that cell is (r, c)'s own. The ratio is invariant to any
+// affine map of the lattice: the undistorted cell puts (r, c) at 1, a
+// 4-neighbour's corner at 0 (a vertex) and a diagonal neighbour's at -1
+// (beyond an edge). On the pattern's border the cell is open on the side
+// with no neighbour (no corner lies beyond the border): its two edges count.
+// Nothing when a neighbour inside the pattern is missing from `grid` or the
+// cell is not convex.
 // Units: view pixels.
 #pragma once
 
 #include <opencv2/core.hpp>
+#include <optional>
 
 #include "vision/grid_growth.hpp"
 #include "vision/grid_prediction.hpp"
@@ -25,6 +38,8 @@ struct LinkCheck {
   int checked = 0, bad = 0, crossed = 0;
 };
 LinkCheck checkLinks(const LatticeView& now, const LatticeView& before, int r, int c, float stretch);
+
+std::optional<float> cellMargin(const LatticeView& grid, int r, int c, cv::Point2f p);
 
 // near: the corner finder of the frame (grid_growth.hpp).
 bool hasSeam(const ViewMarkers& m, float stretch, const CornerFinder& near);

@@ -171,6 +171,12 @@ GridResult GridTracker::track(const ViewHalf& view, const CornerDetector& detect
     detect_ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     return out;
   };
+  timed([&] {
+    std::vector<cv::Point2f> last(current_.point.size());
+    for (size_t i = 0; i < last.size(); ++i) last[i] = view.toRaw(current_.point[i]);
+    detector.prefetchNear(view.raw, last);
+    return 0;
+  });
   const auto near = [&](cv::Point2f q, float radius) -> std::optional<cv::Point2f> {
     const auto c = timed([&] { return detector.detectNear(view.raw, view.toRaw(q), radius); });
     if (!c) return std::nullopt;
@@ -290,7 +296,8 @@ GridResult GridTracker::finish(const Prediction& pred, ViewMarkers m) {
   // Swap detector: far from where the neighbours put it, links that flip,
   // stretch or cross.
   const LatticeView now = lattice(m), before = lattice(current_);
-  std::vector<int> reject, off_motion;
+  std::vector<int> reject;
+  std::vector<OffMotion> off_motion;
   std::vector<float> confidence(n, 0.0f);
   for (int id = 0; id < pattern_.count(); ++id) {
     if (!m.valid[static_cast<size_t>(id)]) continue;
@@ -315,7 +322,7 @@ GridResult GridTracker::finish(const Prediction& pred, ViewMarkers m) {
       const float residual = static_cast<float>(cv::norm(p - *q));
       if (residual > tolerance) {
         reject.push_back(id);
-        off_motion.push_back(id);
+        off_motion.push_back({id, residual / pred.spacing[static_cast<size_t>(id)]});
         continue;
       }
       agreement = 1.0f - residual / tolerance;
@@ -353,25 +360,45 @@ GridResult GridTracker::finish(const Prediction& pred, ViewMarkers m) {
   return r;
 }
 
-void GridTracker::rescue(const std::vector<int>& off_motion, const Prediction& pred, const ViewMarkers& m,
+void GridTracker::rescue(const std::vector<OffMotion>& off_motion, const Prediction& pred, const ViewMarkers& m,
                          std::vector<int>& reject, std::vector<float>& confidence) const {
   if (off_motion.empty() || options_.rescue_fraction <= 0.0f) return;
   std::vector<std::uint8_t> passed = m.valid;
   for (int id : reject) passed[static_cast<size_t>(id)] = 0;
   const LatticeView trusted{m.rows, m.cols, &m.point, &passed}, before = lattice(current_);
-  std::vector<int> kept;
-  for (int id : off_motion) {
-    const size_t i = static_cast<size_t>(id);
-    const int row = pattern_.rowOf(id), col = pattern_.colOf(id);
-    const float limit = options_.rescue_fraction * pred.spacing[i];
-    const auto worst = closeCompletion(trusted, row, col, m.point[i]);
-    if (!worst || *worst > limit) continue;
-    const LinkCheck links = checkLinks(trusted, before, row, col, options_.max_link_stretch);
-    if (links.bad > 0 || links.crossed > 0) continue;
-    confidence[i] = 0.5f * (1.0f - *worst / limit);
-    kept.push_back(id);
+  // Rounds: a marker kept in one round is a passing neighbour in the next.
+  std::vector<OffMotion> pending = off_motion;
+  for (bool kept_any = true; kept_any && !pending.empty();) {
+    kept_any = false;
+    std::vector<OffMotion> still;
+    for (const OffMotion& off : pending) {
+      const int id = off.id;
+      const size_t i = static_cast<size_t>(id);
+      const int row = pattern_.rowOf(id), col = pattern_.colOf(id);
+      const LinkCheck links = checkLinks(trusted, before, row, col, options_.max_link_stretch);
+      float grade = -1.0f;
+      if (links.bad == 0 && links.crossed == 0) {
+        // Inside the cell of its passing neighbours, where no other corner
+        // can be, and not a near-swap of where their motion puts it.
+        const auto margin = cellMargin(trusted, row, col, m.point[i]);
+        if (margin && *margin > 0.0f && off.residual_squares <= kNearSwapSquares) {
+          grade = 1.0f;
+        } else {
+          const float limit = options_.rescue_fraction * pred.spacing[i];
+          const auto worst = closeCompletion(trusted, row, col, m.point[i]);
+          if (worst && *worst <= limit) grade = 1.0f - *worst / limit;
+        }
+      }
+      if (grade < 0.0f) {
+        still.push_back(off);
+        continue;
+      }
+      confidence[i] = 0.5f * grade;
+      passed[i] = 1, kept_any = true;
+      reject.erase(std::find(reject.begin(), reject.end(), id));
+    }
+    pending = std::move(still);
   }
-  for (int id : kept) reject.erase(std::find(reject.begin(), reject.end(), id));
 }
 
 GridResult detectBoard(const cv::Mat& grey, const MarkerPattern& pattern, const CornerDetectorOptions& options) {

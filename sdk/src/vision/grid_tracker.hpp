@@ -47,13 +47,20 @@
 // (links crossing).
 // Stick-slip edges: where part of the contact sticks and its neighbours jump,
 // a correct marker can lie beyond the tolerance from its neighbours' motion.
-// Such a marker (off by motion alone) is kept when, among the neighbours that
-// passed every test, every midpoint and parallelogram completion (at least
-// three, one a midpoint) puts it within rescue_fraction x spacing (closeCompletion, grid_prediction.hpp) and
-// its links pass: a marker on a neighbour's corner is a square away from
-// those, and a region whose ids slipped together has no passing neighbours
-// inside it. Its confidence is 0.5 x (1 - that distance / (rescue_fraction x
-// spacing)) x the link factor.
+// Such a marker (off by motion alone) is kept, in rounds (one kept is a
+// passing neighbour in the next), when its links pass and either
+//  - it lies inside the cell of its four neighbours that passed every test
+//    (cellMargin, grid_checks.hpp: the only corner there is its own; open on
+//    the pattern's border) and at most 0.4 of a square from where their
+//    motion puts it (further is a near-swap, kNearSwapSquares); confidence
+//    0.5 x the link factor; or
+//  - every midpoint and parallelogram completion by those neighbours (at
+//    least three, one a midpoint) puts it within rescue_fraction x spacing
+//    (closeCompletion, grid_prediction.hpp); confidence 0.5 x (1 - that
+//    distance / (rescue_fraction x spacing)) x the link factor.
+// A marker on a neighbour's corner is a vertex of that cell and a square
+// from those completions; a region whose ids slipped together has no
+// passing neighbours inside it.
 // Confidence per reported marker, in 0..1 (ViewMarkers::confidence):
 //   (1 - residual / (outlier_fraction x spacing)) x (good links / links),
 // residual being that distance; 0.5 x the link factor when no neighbour can
@@ -85,7 +92,7 @@ struct GridTrackerOptions {
   int min_seeds = 3;              // fewer seeds: detect the whole view and relabel
   float relabel_median = 0.5f;    // of spacing: the relabelling's largest accepted median distance
   float seam_stretch = 1.5f;      // a link this much longer than its collinear neighbours: look for a seam
-  float rescue_fraction = 0.15f;   // of spacing: off the neighbours' motion but this close to every completion: kept (0: never)
+  float rescue_fraction = 0.15f;   // of spacing: off the neighbours' motion but this close to every completion: kept (0: no rescue at all)
   void validate() const;          // throws InputError naming the bad field
 };
 
@@ -147,7 +154,15 @@ class GridTracker {
   GridResult finish(const Prediction& prediction, ViewMarkers candidates);
   // Takes back from `reject` the markers of `off_motion` that sit where the
   // neighbours that passed put them (see above); sets their confidence.
-  void rescue(const std::vector<int>& off_motion, const Prediction& prediction, const ViewMarkers& m,
+  struct OffMotion {
+    int id;
+    float residual_squares;  // from where the neighbours' motion puts it, in local spacings
+  };
+  // A marker further than this from its place, in squares, is a near-swap
+  // (issue 16's gross error): the rescue keeps none further than this from
+  // where its neighbours' motion puts it.
+  static constexpr float kNearSwapSquares = 0.4f;
+  void rescue(const std::vector<OffMotion>& off_motion, const Prediction& prediction, const ViewMarkers& m,
               std::vector<int>& reject, std::vector<float>& confidence) const;
 
   MarkerPattern pattern_;

@@ -50,13 +50,19 @@ bool SubpixelRefiner::resample(const cv::Mat& grey, cv::Point2f q, int side, flo
   const float fx0 = std::floor(q.x), fy0 = std::floor(q.y);
   const int x0 = static_cast<int>(fx0) - half, y0 = static_cast<int>(fy0) - half;
   if (x0 < 0 || y0 < 0 || x0 + side >= grey.cols || y0 + side >= grey.rows) return false;
+  // Separable: along x on side + 1 rows, then along y.
   const float ax = q.x - fx0, ay = q.y - fy0;
-  const float w00 = (1 - ax) * (1 - ay), w01 = ax * (1 - ay), w10 = (1 - ax) * ay, w11 = ax * ay;
+  float along_x[34 * 33];  // (side + 1) x side, side <= 33 by half_window <= 15
+  for (int v = 0; v <= side; ++v) {
+    const unsigned char* row = grey.ptr<unsigned char>(y0 + v) + x0;
+    float* out = along_x + v * side;
+    for (int u = 0; u < side; ++u) out[u] = static_cast<float>(row[u]) + ax * static_cast<float>(row[u + 1] - row[u]);
+  }
   for (int v = 0; v < side; ++v) {
-    const unsigned char* r0 = grey.ptr<unsigned char>(y0 + v) + x0;
-    const unsigned char* r1 = grey.ptr<unsigned char>(y0 + v + 1) + x0;
+    const float* top = along_x + v * side;
+    const float* bottom = top + side;
     float* out = patch + v * side;
-    for (int u = 0; u < side; ++u) out[u] = w00 * r0[u] + w01 * r0[u + 1] + w10 * r1[u] + w11 * r1[u + 1];
+    for (int u = 0; u < side; ++u) out[u] = top[u] + ay * (bottom[u] - top[u]);
   }
   return true;
 }
@@ -106,8 +112,14 @@ std::optional<cv::Point2f> SubpixelRefiner::step(const cv::Mat& grey, cv::Point2
   return cv::Point2f(q.x + dx, q.y + dy);
 }
 
+// Stops when the distance left to the fixed point is below 0.005 px. The
+// iteration contracts linearly, so after moves m_{n-1}, m_n that distance is
+// about |m_n| rho / (1 - rho), rho = |m_n| / |m_{n-1}| (the a-posteriori bound
+// of a contraction); before a contraction is known, when |m_n| itself is.
 std::optional<cv::Point2f> SubpixelRefiner::refine(const cv::Mat& grey, cv::Point2f start) const {
+  constexpr float kTolerance = 0.005f;  // px
   cv::Point2f q = start;
+  float last_move = 0.0f;
   for (int it = 0; it < options_.max_iterations; ++it) {
     const auto next = step(grey, q);
     if (!next) return std::nullopt;
@@ -115,7 +127,10 @@ std::optional<cv::Point2f> SubpixelRefiner::refine(const cv::Mat& grey, cv::Poin
     q = *next;
     const cv::Point2f drift = q - start;
     if (drift.dot(drift) > options_.max_shift_px * options_.max_shift_px) return std::nullopt;
-    if (move.dot(move) < 0.005f * 0.005f) break;
+    const float length = std::sqrt(move.dot(move));
+    if (length < kTolerance) break;
+    if (it > 0 && length < last_move && length * length / (last_move - length) < kTolerance) break;
+    last_move = length;
   }
   return q;
 }

@@ -1,7 +1,8 @@
 // vision/subpixel_refiner.hpp — sub-pixel position of a checkerboard corner.
 //
 // Two methods, both iterated on a window resampled (bilinearly) around the
-// current estimate q, until the step is below 0.005 px:
+// current estimate q, until the distance left to the fixed point (estimated
+// from the contraction of the last two steps) is below 0.005 px:
 //  - GradientOrthogonality (as cv::cornerSubPix): every image gradient g_i at
 //    pixel p_i near a corner is orthogonal to (q - p_i), so
 //    q = (sum w_i g_i g_i^T)^-1 sum w_i g_i g_i^T p_i, Gaussian weights w_i;

@@ -1,0 +1,124 @@
+// The cell test of the grid tracker's rescue (cellMargin, vision/grid_checks.hpp)
+// on exact lattices, and the rescue it feeds on a synthetic stick-slip edge:
+// - under any affine map of the lattice a marker's own corner sits at margin 1,
+//   a 4-neighbour's corner at 0 and a diagonal neighbour's at -1, also in the
+//   open cell of a marker on the pattern's border;
+// - no answer where an inner neighbour is missing (its corner may lie on that
+//   side) or the cell is not convex;
+// - a marker off its neighbours' motion at a stick-slip edge (half its
+//   neighbours stuck, half jumped) is kept, in its place, with confidence 0.5,
+//   and is dropped without the rescue; a corner 0.45 of a square off where its
+//   neighbours' motion puts it, further than the near-swap bound of 0.4, is
+//   dropped even inside its cell (ACornerOffItsPlace... in test_fast_motion.cpp).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "synthetic_board.hpp"
+#include "vision/grid_checks.hpp"
+#include "vision/grid_tracker.hpp"
+
+namespace onetip::vision {
+namespace {
+
+struct Lattice {
+  int rows, cols;
+  std::vector<cv::Point2f> point;
+  std::vector<std::uint8_t> valid;
+  LatticeView view() const { return {rows, cols, &point, &valid}; }
+};
+
+// (r, c) -> A (c, r) + t: rotation 25 deg, shear 0.3, scales 40 and 25 px.
+cv::Point2f affine(double r, double c) {
+  const double a = 25 * M_PI / 180, sx = 40, sy = 25, shear = 0.3;
+  const double u = sx * (c + shear * r), v = sy * r;
+  return {static_cast<float>(std::cos(a) * u - std::sin(a) * v + 300), static_cast<float>(std::sin(a) * u + std::cos(a) * v + 200)};
+}
+
+Lattice affineLattice(int rows, int cols) {
+  Lattice l{rows, cols, {}, {}};
+  for (int r = 0; r < rows; ++r)
+    for (int c = 0; c < cols; ++c) l.point.push_back(affine(r, c)), l.valid.push_back(1);
+  return l;
+}
+
+TEST(GridCell, MarginIsAffineInvariantOwnCornerOneNeighbourZeroDiagonalMinusOne) {
+  const Lattice l = affineLattice(5, 5);
+  EXPECT_NEAR(*cellMargin(l.view(), 2, 2, affine(2, 2)), 1.0f, 1e-4f);
+  for (const auto& [dr, dc] : {std::pair{0, 1}, {1, 0}, {0, -1}, {-1, 0}})
+    EXPECT_NEAR(*cellMargin(l.view(), 2, 2, affine(2 + dr, 2 + dc)), 0.0f, 1e-4f);
+  for (const auto& [dr, dc] : {std::pair{1, 1}, {1, -1}, {-1, 1}, {-1, -1}})
+    EXPECT_NEAR(*cellMargin(l.view(), 2, 2, affine(2 + dr, 2 + dc)), -1.0f, 1e-4f);
+  EXPECT_NEAR(*cellMargin(l.view(), 2, 2, affine(2, 2.3)), 0.7f, 1e-4f);  // 0.3 of a square towards a neighbour
+}
+
+TEST(GridCell, BorderCellIsOpenBeyondThePattern) {
+  const Lattice l = affineLattice(5, 5);
+  // Row 0: no up neighbour, the cell is the wedge left, down, right.
+  EXPECT_NEAR(*cellMargin(l.view(), 0, 2, affine(0, 2)), 1.0f, 1e-4f);
+  EXPECT_NEAR(*cellMargin(l.view(), 0, 2, affine(1, 3)), -1.0f, 1e-4f);
+  EXPECT_NEAR(*cellMargin(l.view(), 0, 2, affine(1, 1)), -1.0f, 1e-4f);
+  EXPECT_LT(*cellMargin(l.view(), 0, 2, affine(0, 4)), -0.9f);  // two along the border
+  EXPECT_GT(*cellMargin(l.view(), 0, 2, affine(-0.5, 2)), 1.0f - 1e-4f);  // beyond the border: no corner there
+  // A corner of the pattern has two neighbours only: no cell.
+  EXPECT_FALSE(cellMargin(l.view(), 0, 0, affine(0, 0)).has_value());
+}
+
+TEST(GridCell, NoAnswerWithAnInnerNeighbourMissingOrACellNotConvex) {
+  Lattice l = affineLattice(5, 5);
+  l.valid[static_cast<size_t>(2 * 5 + 3)] = 0;  // right neighbour of (2, 2) not measured
+  EXPECT_FALSE(cellMargin(l.view(), 2, 2, affine(2, 2)).has_value());
+  l = affineLattice(5, 5);
+  l.point[static_cast<size_t>(1 * 5 + 2)] = affine(2.3, 2);  // up neighbour folded past the centre
+  EXPECT_FALSE(cellMargin(l.view(), 2, 2, affine(2, 2)).has_value());
+}
+
+const MarkerPattern kPattern{17, 17, 1.2};
+const cv::Size kView(960, 1080);
+
+// The next frame's corners: columns right of `edge_col` jumped `jump` squares
+// along x, column edge_col moved `own` squares, the rest stood still.
+std::vector<Corner> stickSlipFrame(const GridTracker& tracker, const std::vector<Corner>& rest, int edge_col, float jump,
+                                   float own, float square_px) {
+  std::vector<Corner> next = rest;
+  for (Corner& c : next) {
+    for (int id = 0; id < kPattern.count(); ++id) {
+      if (cv::norm(c.pt - tracker.rest().point[static_cast<size_t>(id)]) > 1.0) continue;
+      const int col = kPattern.colOf(id);
+      if (col > edge_col) c.pt.x += jump * square_px;
+      if (col == edge_col && kPattern.rowOf(id) == 8) c.pt.x += own * square_px;
+    }
+  }
+  return next;
+}
+
+TEST(GridCell, AMarkerAtAStickSlipEdgeIsKeptInItsPlace) {
+  const testing::BoardWarp warp;
+  const cv::Mat img = testing::renderBoard(warp, testing::BoardLook{}, kView);
+  const ViewHalf view{img, false};
+  const CornerDetector detector;
+  const std::vector<Corner> rest = detectInView(detector, view);
+  const int id = kPattern.id(8, 8);
+  // (8, 8) moved 0.34 of a square, its right-hand neighbours 0.35, its left-hand
+  // ones and the rest of its column not at all: off the neighbours' motion
+  // (their median: none) by more than the tolerance, 0.3 of the local spacing.
+  for (const float rescue : {0.15f, 0.0f}) {
+    GridTrackerOptions options;
+    options.rescue_fraction = rescue;
+    GridTracker tracker(kPattern, options);
+    ASSERT_TRUE(tracker.initialize(view, detector).ok());
+    const cv::Point2f truth = tracker.rest().point[static_cast<size_t>(id)] + cv::Point2f(0.34f * 40, 0);
+    const GridResult r = tracker.track(stickSlipFrame(tracker, rest, 8, 0.35f, 0.34f, 40), view);
+    ASSERT_TRUE(r.ok()) << r.message;
+    if (rescue > 0) {
+      ASSERT_TRUE(r.markers.valid[static_cast<size_t>(id)]);
+      EXPECT_LT(cv::norm(r.markers.point[static_cast<size_t>(id)] - truth), 0.01);
+      EXPECT_FLOAT_EQ(r.markers.confidence[static_cast<size_t>(id)], 0.5f);
+    } else {
+      EXPECT_FALSE(r.markers.valid[static_cast<size_t>(id)]) << "the case must need the rescue";
+    }
+  }
+}
+
+}  // namespace
+}  // namespace onetip::vision
