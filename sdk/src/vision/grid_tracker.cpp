@@ -171,12 +171,10 @@ GridResult GridTracker::track(const ViewHalf& view, const CornerDetector& detect
     detect_ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     return out;
   };
-  timed([&] {
-    std::vector<cv::Point2f> last(current_.point.size());
-    for (size_t i = 0; i < last.size(); ++i) last[i] = view.toRaw(current_.point[i]);
-    detector.prefetchNear(view.raw, last);
-    return 0;
-  });
+  // Every marker's window asked for at once: a fresh frame is not in the cache.
+  std::vector<cv::Point2f> last_raw(current_.point.size());
+  for (size_t i = 0; i < last_raw.size(); ++i) last_raw[i] = view.toRaw(current_.point[i]);
+  detector.prefetchNear(view.raw, last_raw);
   const auto near = [&](cv::Point2f q, float radius) -> std::optional<cv::Point2f> {
     const auto c = timed([&] { return detector.detectNear(view.raw, view.toRaw(q), radius); });
     if (!c) return std::nullopt;
