@@ -18,9 +18,10 @@
 // nothing, searching within min(search radius, fine_search_px) of the guess:
 // rings of fine_inner/outer_radius_px and a refinement window of
 // fine_half_window. Where the pad dips steeply at the edge of a deep press a
-// square is foreshortened to ~10 px along one axis, and with blur the
+// square is foreshortened to 6-10 px along one axis, and with blur the
 // default 5 px ring and 11 px window take in the next corner's edges, so the
-// ring test fails there; the fine stage sees only the corner itself. (The
+// ring test fails there; the fine stage's rings (1.5 and 2.5 px) and 5 px
+// window fit inside a 6 px link and see only the corner itself. (The
 // tracker's radius is 0.4 x the shortest predicted link; with 1.2 px of blur
 // the default stage also fails at links of 16-17 px, so the fine stage is
 // tried after every failure, not only for small radii.)
@@ -51,9 +52,9 @@ struct CornerDetectorOptions {
   float min_separation_px = 4.0f;  // non-maximum suppression distance
   SubpixelOptions subpixel;        // refinement
   float fine_search_px = 6.0f;     // detectNear: the fine stage's search radius, pixels (0: no fine stage)
-  float fine_inner_radius_px = 2.0f;
-  float fine_outer_radius_px = 3.5f;
-  int fine_half_window = 3;        // the fine stage's refinement half window
+  float fine_inner_radius_px = 1.5f;  // the fine stage's rings, pixels (fit a 6 px link)
+  float fine_outer_radius_px = 2.5f;
+  int fine_half_window = 2;        // the fine stage's refinement half window
   void validate() const;           // throws InputError naming the bad field
 };
 
