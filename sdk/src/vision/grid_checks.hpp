@@ -13,12 +13,14 @@
 // cellMargin: where p lies in the cell of (r, c), the quadrilateral of its
 // four neighbours (right, down, left, up) in `grid`: for each edge, p's signed
 // distance to it over that of the point the neighbours put (r, c) at (the
-// mean of the opposite pairs' midpoints); the smallest of these. A
+// mean of the opposite pairs' midpoints); the smallest of these. The ratio
+// is invariant to any affine map of the lattice: the undistorted cell puts
+// (r, c) at 1, a 4-neighbour's corner at 0 (a vertex) and a diagonal
+// neighbour's at -1 (beyond an edge), every other corner further out. A
 // checkerboard's image is a continuous one-to-one map of its lattice, so the
-// only corner inside that cell is (r, c)'s own. The ratio is invariant to any
-// affine map of the lattice: the undistorted cell puts (r, c) at 1, a
-// 4-neighbour's corner at 0 (a vertex) and a diagonal neighbour's at -1
-// (beyond an edge). On the pattern's border the cell is open on the side
+// only corner inside that cell is (r, c)'s own unless the lattice bends
+// within the cell by enough to carry a diagonal neighbour across a straight
+// edge (about 0.7 of a square against the affine map of its neighbours). On the pattern's border the cell is open on the side
 // with no neighbour (no corner lies beyond the border): its two edges count.
 // Nothing when a neighbour inside the pattern is missing from `grid` or the
 // cell is not convex.
