@@ -65,6 +65,52 @@ std::optional<float> cellMargin(const LatticeView& grid, int r, int c, cv::Point
   return margin;
 }
 
+std::optional<std::pair<float, float>> pairCellMargins(const LatticeView& grid, int r, int c, int dr, int dc,
+                                                       cv::Point2f pa, cv::Point2f pb) {
+  // e: along the pair, n: across it; the hexagon in cyclic order.
+  const int er = dr, ec = dc, nr = dc, nc = dr;
+  const int at[6][2] = {{r + 2 * er, c + 2 * ec}, {r + er + nr, c + ec + nc}, {r + nr, c + nc},
+                        {r - er, c - ec},         {r - nr, c - nc},           {r + er - nr, c + ec - nc}};
+  cv::Point2f v[6];
+  bool have[6];
+  for (int k = 0; k < 6; ++k) {
+    const int vr = at[k][0], vc = at[k][1];
+    have[k] = grid.has(vr, vc);
+    if (have[k]) v[k] = grid.at(vr, vc);
+    else if (vr >= 0 && vc >= 0 && vr < grid.rows && vc < grid.cols) return std::nullopt;
+  }
+  // Opposite pairs across the pair's centre: (0, 3), (1, 4), (2, 5).
+  cv::Point2f centre(0, 0);
+  int pairs = 0;
+  for (int k = 0; k < 3; ++k)
+    if (have[k] && have[k + 3]) centre += 0.5f * (v[k] + v[k + 3]), ++pairs;
+  if (pairs == 0) return std::nullopt;
+  centre *= 1.0f / static_cast<float>(pairs);
+  // The right way round: b beyond a along the pair's axis.
+  cv::Point2f axis;
+  if (have[0] && have[3]) axis = v[0] - v[3];
+  else if (have[1] && have[2]) axis = v[1] - v[2];
+  else if (have[5] && have[4]) axis = v[5] - v[4];
+  else return std::nullopt;
+  if ((pb - pa).dot(axis) <= 0.0f) return std::nullopt;
+  float ma = 1.0f, mb = 1.0f, turn = 0.0f;
+  for (int k = 0; k < 6; ++k) {
+    const int j = (k + 1) % 6, l = (k + 2) % 6;
+    if (!have[k] || !have[j]) continue;
+    const cv::Point2f edge = v[j] - v[k];
+    const auto inner = static_cast<float>(edge.cross(centre - v[k]));
+    if (inner == 0.0f) return std::nullopt;
+    if (have[l]) {
+      const auto bend = static_cast<float>(edge.cross(v[l] - v[j]));
+      if (bend == 0.0f || bend * turn < 0.0f || bend * inner <= 0.0f) return std::nullopt;  // not convex
+      turn = bend;
+    }
+    ma = std::min(ma, static_cast<float>(edge.cross(pa - v[k])) / inner);
+    mb = std::min(mb, static_cast<float>(edge.cross(pb - v[k])) / inner);
+  }
+  return std::make_pair(ma, mb);
+}
+
 bool hasSeam(const ViewMarkers& m, float stretch, const CornerFinder& near) {
   const auto length2 = [&](int r, int c, int dr, int dc) {
     if (!m.has(r, c) || !m.has(r + dr, c + dc)) return -1.0f;

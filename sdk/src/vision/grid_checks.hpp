@@ -29,6 +29,7 @@
 
 #include <opencv2/core.hpp>
 #include <optional>
+#include <utility>
 
 #include "vision/grid_growth.hpp"
 #include "vision/grid_prediction.hpp"
@@ -42,6 +43,18 @@ struct LinkCheck {
 LinkCheck checkLinks(const LatticeView& now, const LatticeView& before, int r, int c, float stretch);
 
 std::optional<float> cellMargin(const LatticeView& grid, int r, int c, cv::Point2f p);
+
+// pairCellMargins: the same for two neighbouring markers a = (r, c) and
+// b = (r + dr, c + dc) (one step along a lattice axis) neither of which can
+// use the other as a vertex: the cell of the pair is the hexagon of their six
+// 4-neighbours, inside which lie a's and b's corners alone (undistorted:
+// both at 2/3, every other corner at or below 0). The reference point is the
+// pair's centre where their neighbours put it (the mean of the midpoints of
+// the three opposite pairs across it); the margins of pa and pb, or nothing
+// when a vertex inside the pattern is missing from `grid`, the hexagon is not
+// convex, or pa and pb lie the wrong way round along the pair's axis.
+std::optional<std::pair<float, float>> pairCellMargins(const LatticeView& grid, int r, int c, int dr, int dc,
+                                                       cv::Point2f pa, cv::Point2f pb);
 
 // near: the corner finder of the frame (grid_growth.hpp).
 bool hasSeam(const ViewMarkers& m, float stretch, const CornerFinder& near);

@@ -11,6 +11,7 @@
 #include "vision/grid_growth.hpp"
 #include "vision/grid_prediction.hpp"
 #include "vision/grid_recovery.hpp"
+#include "vision/grid_rescue.hpp"
 
 namespace onetip::vision {
 namespace {
@@ -333,7 +334,8 @@ GridResult GridTracker::finish(const Prediction& pred, ViewMarkers m) {
     confidence[static_cast<size_t>(id)] =
         agreement * (links.checked > 0 ? 1.0f - static_cast<float>(links.bad) / static_cast<float>(links.checked) : 1.0f);
   }
-  rescue(off_motion, pred, m, reject, confidence);
+  rescueOffMotion(pattern_, m, before, pred.spacing, off_motion,
+                  RescueLimits{options_.rescue_fraction, options_.max_link_stretch, kNearSwapSquares}, reject, confidence);
   for (int id : reject) m.clear(id);
   r.rejected = static_cast<int>(reject.size());
   m.confidence = std::move(confidence);
@@ -356,47 +358,6 @@ GridResult GridTracker::finish(const Prediction& pred, ViewMarkers m) {
   r.status = r.found >= 3 ? GridStatus::Ok : GridStatus::Lost;
   if (!r.ok()) r.message = "grid tracker: only " + std::to_string(r.found) + " markers found";
   return r;
-}
-
-void GridTracker::rescue(const std::vector<OffMotion>& off_motion, const Prediction& pred, const ViewMarkers& m,
-                         std::vector<int>& reject, std::vector<float>& confidence) const {
-  if (off_motion.empty() || options_.rescue_fraction <= 0.0f) return;
-  std::vector<std::uint8_t> passed = m.valid;
-  for (int id : reject) passed[static_cast<size_t>(id)] = 0;
-  const LatticeView trusted{m.rows, m.cols, &m.point, &passed}, before = lattice(current_);
-  // Rounds: a marker kept in one round is a passing neighbour in the next.
-  std::vector<OffMotion> pending = off_motion;
-  for (bool kept_any = true; kept_any && !pending.empty();) {
-    kept_any = false;
-    std::vector<OffMotion> still;
-    for (const OffMotion& off : pending) {
-      const int id = off.id;
-      const size_t i = static_cast<size_t>(id);
-      const int row = pattern_.rowOf(id), col = pattern_.colOf(id);
-      const LinkCheck links = checkLinks(trusted, before, row, col, options_.max_link_stretch);
-      float grade = -1.0f;
-      if (links.bad == 0 && links.crossed == 0) {
-        // Inside the cell of its passing neighbours, where no other corner
-        // can be, and not a near-swap of where their motion puts it.
-        const auto margin = cellMargin(trusted, row, col, m.point[i]);
-        if (margin && *margin > 0.0f && off.residual_squares <= kNearSwapSquares) {
-          grade = 1.0f;
-        } else {
-          const float limit = options_.rescue_fraction * pred.spacing[i];
-          const auto worst = closeCompletion(trusted, row, col, m.point[i]);
-          if (worst && *worst <= limit) grade = 1.0f - *worst / limit;
-        }
-      }
-      if (grade < 0.0f) {
-        still.push_back(off);
-        continue;
-      }
-      confidence[i] = 0.5f * grade;
-      passed[i] = 1, kept_any = true;
-      reject.erase(std::find(reject.begin(), reject.end(), id));
-    }
-    pending = std::move(still);
-  }
 }
 
 GridResult detectBoard(const cv::Mat& grey, const MarkerPattern& pattern, const CornerDetectorOptions& options) {

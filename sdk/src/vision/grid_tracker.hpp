@@ -47,20 +47,11 @@
 // (links crossing).
 // Stick-slip edges: where part of the contact sticks and its neighbours jump,
 // a correct marker can lie beyond the tolerance from its neighbours' motion.
-// Such a marker (off by motion alone) is kept, in rounds (one kept is a
-// passing neighbour in the next), when its links pass and either
-//  - it lies inside the cell of its four neighbours that passed every test
-//    (cellMargin, grid_checks.hpp: the only corner there is its own; open on
-//    the pattern's border) and at most 0.4 of a square from where their
-//    motion puts it (further is a near-swap, kNearSwapSquares); confidence
-//    0.5 x the link factor; or
-//  - every midpoint and parallelogram completion by those neighbours (at
-//    least three, one a midpoint) puts it within rescue_fraction x spacing
-//    (closeCompletion, grid_prediction.hpp); confidence 0.5 x (1 - that
-//    distance / (rescue_fraction x spacing)) x the link factor.
-// A marker on a neighbour's corner is a vertex of that cell and a square
-// from those completions; a region whose ids slipped together has no
-// passing neighbours inside it.
+// Such a marker (off by motion alone) is taken back where the lattice still
+// places it (grid_rescue.hpp): inside the cell of its passing neighbours and
+// at most 0.4 of a square (kNearSwapSquares) off their motion, or within
+// rescue_fraction x spacing of every completion by them, or, two neighbours
+// off together, inside their pair's cell; confidence at most 0.5.
 // Confidence per reported marker, in 0..1 (ViewMarkers::confidence):
 //   (1 - residual / (outlier_fraction x spacing)) x (good links / links),
 // residual being that distance; 0.5 x the link factor when no neighbour can
@@ -152,18 +143,10 @@ class GridTracker {
                        const RegionDetector& region, const ViewHalf& view);
   // Resolves ids claiming the same corner, rejects outliers, updates the state.
   GridResult finish(const Prediction& prediction, ViewMarkers candidates);
-  // Takes back from `reject` the markers of `off_motion` that sit where the
-  // neighbours that passed put them (see above); sets their confidence.
-  struct OffMotion {
-    int id;
-    float residual_squares;  // from where the neighbours' motion puts it, in local spacings
-  };
   // A marker further than this from its place, in squares, is a near-swap
-  // (issue 16's gross error): the rescue keeps none further than this from
-  // where its neighbours' motion puts it.
+  // (issue 16's gross error): the rescue (grid_rescue.hpp) keeps none further
+  // than this from where its neighbours' motion puts it.
   static constexpr float kNearSwapSquares = 0.4f;
-  void rescue(const std::vector<OffMotion>& off_motion, const Prediction& prediction, const ViewMarkers& m,
-              std::vector<int>& reject, std::vector<float>& confidence) const;
 
   MarkerPattern pattern_;
   GridTrackerOptions options_;

@@ -9,9 +9,13 @@
 //   neighbours stuck, half jumped) is kept, in its place, with confidence 0.5,
 //   and is dropped without the rescue; a corner 0.45 of a square off where its
 //   neighbours' motion puts it, further than the near-swap bound of 0.4, is
-//   dropped even inside its cell (ACornerOffItsPlace... in test_fast_motion.cpp).
+//   dropped even inside its cell (ACornerOffItsPlace... in test_fast_motion.cpp);
+// - the pair's cell (pairCellMargins): the hexagon of two neighbours' six
+//   neighbours holds their two corners alone (2/3 each, every other corner at
+//   or below 0), the right way round; two neighbours off together are kept.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "synthetic_board.hpp"
@@ -73,31 +77,63 @@ TEST(GridCell, NoAnswerWithAnInnerNeighbourMissingOrACellNotConvex) {
   EXPECT_FALSE(cellMargin(l.view(), 2, 2, affine(2, 2)).has_value());
 }
 
+TEST(GridCell, PairCellHoldsTheTwoCornersAloneTheRightWayRound) {
+  Lattice l = affineLattice(6, 6);
+  // (2, 2) and (2, 3), neither a vertex of the other's cell: their hexagon.
+  l.valid[static_cast<size_t>(2 * 6 + 2)] = l.valid[static_cast<size_t>(2 * 6 + 3)] = 0;
+  const auto m = pairCellMargins(l.view(), 2, 2, 0, 1, affine(2, 2), affine(2, 3));
+  ASSERT_TRUE(m.has_value());
+  EXPECT_NEAR(m->first, 2.0f / 3.0f, 1e-4f);
+  EXPECT_NEAR(m->second, 2.0f / 3.0f, 1e-4f);
+  EXPECT_FALSE(pairCellMargins(l.view(), 2, 2, 0, 1, affine(2, 3), affine(2, 2)).has_value());  // swapped
+  // Every other corner is on or beyond the hexagon (the second point far along
+  // the pair's axis keeps the order test out of the way).
+  for (int r = 0; r < 6; ++r)
+    for (int c = 0; c < 6; ++c) {
+      if (r == 2 && (c == 2 || c == 3)) continue;
+      const auto other = pairCellMargins(l.view(), 2, 2, 0, 1, affine(r, c), affine(2, 20));
+      ASSERT_TRUE(other.has_value()) << r << " " << c;
+      EXPECT_LE(other->first, 1e-4f) << r << " " << c;
+    }
+  // Down the columns, and open on the pattern's border: (2, 5) and (3, 5).
+  l = affineLattice(6, 6);
+  l.valid[static_cast<size_t>(2 * 6 + 5)] = l.valid[static_cast<size_t>(3 * 6 + 5)] = 0;
+  const auto border = pairCellMargins(l.view(), 2, 5, 1, 0, affine(2, 5), affine(3, 5));
+  ASSERT_TRUE(border.has_value());
+  EXPECT_NEAR(border->first, 2.0f / 3.0f, 1e-4f);
+  EXPECT_NEAR(border->second, 2.0f / 3.0f, 1e-4f);
+}
+
 const MarkerPattern kPattern{17, 17, 1.2};
 const cv::Size kView(960, 1080);
 
 // The next frame's corners: columns right of `edge_col` jumped `jump` squares
 // along x, column edge_col moved `own` squares, the rest stood still.
+// `own_rows` of column edge_col moved `own` squares, the rest of it stood still.
 std::vector<Corner> stickSlipFrame(const GridTracker& tracker, const std::vector<Corner>& rest, int edge_col, float jump,
-                                   float own, float square_px) {
+                                   float own, float square_px, std::vector<int> own_rows = {8}) {
   std::vector<Corner> next = rest;
   for (Corner& c : next) {
     for (int id = 0; id < kPattern.count(); ++id) {
       if (cv::norm(c.pt - tracker.rest().point[static_cast<size_t>(id)]) > 1.0) continue;
-      const int col = kPattern.colOf(id);
+      const int col = kPattern.colOf(id), row = kPattern.rowOf(id);
       if (col > edge_col) c.pt.x += jump * square_px;
-      if (col == edge_col && kPattern.rowOf(id) == 8) c.pt.x += own * square_px;
+      if (col == edge_col && std::find(own_rows.begin(), own_rows.end(), row) != own_rows.end()) c.pt.x += own * square_px;
     }
   }
   return next;
 }
 
-TEST(GridCell, AMarkerAtAStickSlipEdgeIsKeptInItsPlace) {
-  const testing::BoardWarp warp;
-  const cv::Mat img = testing::renderBoard(warp, testing::BoardLook{}, kView);
+// A rest board (17 x 17, 40 px squares) and its detected corners.
+class GridCellTracking : public ::testing::Test {
+ protected:
+  const cv::Mat img = testing::renderBoard(testing::BoardWarp{}, testing::BoardLook{}, kView);
   const ViewHalf view{img, false};
   const CornerDetector detector;
   const std::vector<Corner> rest = detectInView(detector, view);
+};
+
+TEST_F(GridCellTracking, AMarkerAtAStickSlipEdgeIsKeptInItsPlace) {
   const int id = kPattern.id(8, 8);
   // (8, 8) moved 0.34 of a square, its right-hand neighbours 0.35, its left-hand
   // ones and the rest of its column not at all: off the neighbours' motion
@@ -117,6 +153,23 @@ TEST(GridCell, AMarkerAtAStickSlipEdgeIsKeptInItsPlace) {
     } else {
       EXPECT_FALSE(r.markers.valid[static_cast<size_t>(id)]) << "the case must need the rescue";
     }
+  }
+}
+
+TEST_F(GridCellTracking, TwoNeighboursOffTogetherAreKeptAsAPair) {
+  // (8, 8) and (9, 8) both moved 0.38 of a square, everything else stood
+  // still: each is off its neighbours' motion by more than the tolerance, lacks
+  // the other as a vertex of its own cell, and lies 0.37 of a square from the
+  // completions by its passing neighbours.
+  GridTracker tracker(kPattern);
+  ASSERT_TRUE(tracker.initialize(view, detector).ok());
+  const GridResult r = tracker.track(stickSlipFrame(tracker, rest, 8, 0.0f, 0.38f, 40, {8, 9}), view);
+  ASSERT_TRUE(r.ok()) << r.message;
+  for (const int row : {8, 9}) {
+    const size_t id = static_cast<size_t>(kPattern.id(row, 8));
+    ASSERT_TRUE(r.markers.valid[id]) << row;
+    EXPECT_LT(cv::norm(r.markers.point[id] - (tracker.rest().point[id] + cv::Point2f(0.38f * 40, 0))), 0.01) << row;
+    EXPECT_FLOAT_EQ(r.markers.confidence[id], 0.5f) << row;
   }
 }
 
