@@ -20,8 +20,9 @@
 // checkerboard's image is a continuous one-to-one map of its lattice, so the
 // only corner inside that cell is (r, c)'s own unless the lattice bends
 // within the cell by enough to carry a diagonal neighbour across a straight
-// edge (about 0.7 of a square against the affine map of its neighbours). On the pattern's border the cell is open on the side
-// with no neighbour (no corner lies beyond the border): its two edges count.
+// edge (about 0.7 of a square against the affine map of its neighbours). On
+// the pattern's border the cell is open on the side with no neighbour (no
+// corner lies beyond the border): its two edges count.
 // Nothing when a neighbour inside the pattern is missing from `grid` or the
 // cell is not convex.
 // Units: view pixels.

@@ -8,7 +8,7 @@
 //  - it lies inside the cell of its four passing neighbours (cellMargin,
 //    grid_checks.hpp: the only corner there is its own; open on the
 //    pattern's border) and at most near_swap_squares from where their motion
-//    puts it (further is a near-swap); confidence 0.5 x the link factor; or
+//    puts it (further is a near-swap); confidence 0.5; or
 //  - every midpoint and parallelogram completion by those neighbours (at
 //    least three, one a midpoint) puts it within rescue_fraction x spacing
 //    (closeCompletion, grid_prediction.hpp); confidence 0.5 x (1 - that

@@ -335,7 +335,7 @@ GridResult GridTracker::finish(const Prediction& pred, ViewMarkers m) {
         agreement * (links.checked > 0 ? 1.0f - static_cast<float>(links.bad) / static_cast<float>(links.checked) : 1.0f);
   }
   rescueOffMotion(pattern_, m, before, pred.spacing, off_motion,
-                  RescueLimits{options_.rescue_fraction, options_.max_link_stretch, kNearSwapSquares}, reject, confidence);
+                  RescueLimits{options_.rescue_fraction, options_.max_link_stretch}, reject, confidence);
   for (int id : reject) m.clear(id);
   r.rejected = static_cast<int>(reject.size());
   m.confidence = std::move(confidence);

@@ -48,10 +48,11 @@
 // Stick-slip edges: where part of the contact sticks and its neighbours jump,
 // a correct marker can lie beyond the tolerance from its neighbours' motion.
 // Such a marker (off by motion alone) is taken back where the lattice still
-// places it (grid_rescue.hpp): inside the cell of its passing neighbours and
-// at most 0.4 of a square (kNearSwapSquares) off their motion, or within
-// rescue_fraction x spacing of every completion by them, or, two neighbours
-// off together, inside their pair's cell; confidence at most 0.5.
+// places it (grid_rescue.hpp): inside the cell of its passing neighbours
+// and at most 0.4 of a square (RescueLimits::near_swap_squares) off their
+// motion, or within rescue_fraction x spacing of every completion by them,
+// or, two neighbours off together, inside their pair's cell; confidence at
+// most 0.5.
 // Confidence per reported marker, in 0..1 (ViewMarkers::confidence):
 //   (1 - residual / (outlier_fraction x spacing)) x (good links / links),
 // residual being that distance; 0.5 x the link factor when no neighbour can
@@ -143,11 +144,6 @@ class GridTracker {
                        const RegionDetector& region, const ViewHalf& view);
   // Resolves ids claiming the same corner, rejects outliers, updates the state.
   GridResult finish(const Prediction& prediction, ViewMarkers candidates);
-  // A marker further than this from its place, in squares, is a near-swap
-  // (issue 16's gross error): the rescue (grid_rescue.hpp) keeps none further
-  // than this from where its neighbours' motion puts it.
-  static constexpr float kNearSwapSquares = 0.4f;
-
   MarkerPattern pattern_;
   GridTrackerOptions options_;
   bool initialized_ = false;
