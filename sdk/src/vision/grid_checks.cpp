@@ -28,41 +28,69 @@ LinkCheck checkLinks(const LatticeView& now, const LatticeView& before, int r, i
   return out;
 }
 
-std::optional<float> cellMargin(const LatticeView& grid, int r, int c, cv::Point2f p) {
-  constexpr int kDir[4][2] = {{0, 1}, {1, 0}, {0, -1}, {-1, 0}};  // cyclic: right, down, left, up
-  cv::Point2f v[4];
-  bool have[4] = {false, false, false, false};
+namespace {
+
+// The polygon of N lattice vertices `at` (cyclic) around a marker or a pair
+// of markers, open where a vertex lies beyond the pattern, with the point
+// its vertices put the middle at: the mean of the midpoints of the opposite
+// vertices (k, k + N/2) that are there. margin(p): per edge, p's signed
+// distance over the middle's; the smallest (see cellMargin in the header).
+template <int N>
+struct OpenPolygon {
+  cv::Point2f v[N];
+  bool have[N] = {};
   int count = 0;
-  for (int k = 0; k < 4; ++k) {
-    const int nr = r + kDir[k][0], nc = c + kDir[k][1];
-    if (grid.has(nr, nc)) {
-      v[k] = grid.at(nr, nc), have[k] = true, ++count;
-    } else if (nr >= 0 && nc >= 0 && nr < grid.rows && nc < grid.cols) {
-      return std::nullopt;  // a neighbour not measured: its corner may lie anywhere on that side
+  float inner[N] = {};  // per edge k -> k+1 present: the middle's side, times |edge|
+
+  // Nothing when a vertex inside the pattern is missing from `grid`, no
+  // opposite pair is there, or the polygon is degenerate or not convex.
+  static std::optional<OpenPolygon> gather(const LatticeView& grid, const int (&at)[N][2]) {
+    OpenPolygon poly;
+    for (int k = 0; k < N; ++k) {
+      const int r = at[k][0], c = at[k][1];
+      if (grid.has(r, c)) poly.v[k] = grid.at(r, c), poly.have[k] = true, ++poly.count;
+      else if (r >= 0 && c >= 0 && r < grid.rows && c < grid.cols) return std::nullopt;  // it may lie anywhere
     }
-  }
-  if (count < 3) return std::nullopt;
-  // (r, c) where its neighbours put it: the mean of the opposite pairs' midpoints.
-  cv::Point2f centre(0, 0);
-  int pairs = 0;
-  for (int k = 0; k < 2; ++k)
-    if (have[k] && have[k + 2]) centre += 0.5f * (v[k] + v[k + 2]), ++pairs;
-  centre *= 1.0f / static_cast<float>(pairs);
-  float margin = 1.0f, turn = 0.0f;
-  for (int k = 0; k < 4; ++k) {
-    const int j = (k + 1) % 4, l = (k + 2) % 4;
-    if (!have[k] || !have[j]) continue;
-    const cv::Point2f edge = v[j] - v[k];
-    const auto inner = static_cast<float>(edge.cross(centre - v[k]));  // the centre's side, times |edge|
-    if (have[l]) {
-      const auto bend = static_cast<float>(edge.cross(v[l] - v[j]));
-      if (bend == 0.0f || bend * turn < 0.0f || bend * inner <= 0.0f) return std::nullopt;  // not convex
-      turn = bend;
+    cv::Point2f middle(0, 0);
+    int pairs = 0;
+    for (int k = 0; k < N / 2; ++k)
+      if (poly.have[k] && poly.have[k + N / 2]) middle += 0.5f * (poly.v[k] + poly.v[k + N / 2]), ++pairs;
+    if (pairs == 0) return std::nullopt;
+    middle *= 1.0f / static_cast<float>(pairs);
+    float turn = 0.0f;
+    for (int k = 0; k < N; ++k) {
+      const int j = (k + 1) % N, l = (k + 2) % N;
+      if (!poly.have[k] || !poly.have[j]) continue;
+      const cv::Point2f edge = poly.v[j] - poly.v[k];
+      poly.inner[k] = static_cast<float>(edge.cross(middle - poly.v[k]));
+      if (poly.inner[k] == 0.0f) return std::nullopt;
+      if (poly.have[l]) {
+        const auto bend = static_cast<float>(edge.cross(poly.v[l] - poly.v[j]));
+        if (bend == 0.0f || bend * turn < 0.0f || bend * poly.inner[k] <= 0.0f) return std::nullopt;  // not convex
+        turn = bend;
+      }
     }
-    if (inner == 0.0f) return std::nullopt;
-    margin = std::min(margin, static_cast<float>(edge.cross(p - v[k])) / inner);
+    return poly;
   }
-  return margin;
+
+  float margin(cv::Point2f p) const {
+    float m = 1.0f;
+    for (int k = 0; k < N; ++k) {
+      const int j = (k + 1) % N;
+      if (have[k] && have[j]) m = std::min(m, static_cast<float>((v[j] - v[k]).cross(p - v[k])) / inner[k]);
+    }
+    return m;
+  }
+};
+
+}  // namespace
+
+std::optional<float> cellMargin(const LatticeView& grid, int r, int c, cv::Point2f p) {
+  // Cyclic: right, down, left, up.
+  const int at[4][2] = {{r, c + 1}, {r + 1, c}, {r, c - 1}, {r - 1, c}};
+  const auto cell = OpenPolygon<4>::gather(grid, at);
+  if (!cell || cell->count < 3) return std::nullopt;
+  return cell->margin(p);
 }
 
 std::optional<std::pair<float, float>> pairCellMargins(const LatticeView& grid, int r, int c, int dr, int dc,
@@ -71,44 +99,16 @@ std::optional<std::pair<float, float>> pairCellMargins(const LatticeView& grid, 
   const int er = dr, ec = dc, nr = dc, nc = dr;
   const int at[6][2] = {{r + 2 * er, c + 2 * ec}, {r + er + nr, c + ec + nc}, {r + nr, c + nc},
                         {r - er, c - ec},         {r - nr, c - nc},           {r + er - nr, c + ec - nc}};
-  cv::Point2f v[6];
-  bool have[6];
-  for (int k = 0; k < 6; ++k) {
-    const int vr = at[k][0], vc = at[k][1];
-    have[k] = grid.has(vr, vc);
-    if (have[k]) v[k] = grid.at(vr, vc);
-    else if (vr >= 0 && vc >= 0 && vr < grid.rows && vc < grid.cols) return std::nullopt;
-  }
-  // Opposite pairs across the pair's centre: (0, 3), (1, 4), (2, 5).
-  cv::Point2f centre(0, 0);
-  int pairs = 0;
-  for (int k = 0; k < 3; ++k)
-    if (have[k] && have[k + 3]) centre += 0.5f * (v[k] + v[k + 3]), ++pairs;
-  if (pairs == 0) return std::nullopt;
-  centre *= 1.0f / static_cast<float>(pairs);
+  const auto cell = OpenPolygon<6>::gather(grid, at);
+  if (!cell) return std::nullopt;
   // The right way round: b beyond a along the pair's axis.
   cv::Point2f axis;
-  if (have[0] && have[3]) axis = v[0] - v[3];
-  else if (have[1] && have[2]) axis = v[1] - v[2];
-  else if (have[5] && have[4]) axis = v[5] - v[4];
+  if (cell->have[0] && cell->have[3]) axis = cell->v[0] - cell->v[3];
+  else if (cell->have[1] && cell->have[2]) axis = cell->v[1] - cell->v[2];
+  else if (cell->have[5] && cell->have[4]) axis = cell->v[5] - cell->v[4];
   else return std::nullopt;
   if ((pb - pa).dot(axis) <= 0.0f) return std::nullopt;
-  float ma = 1.0f, mb = 1.0f, turn = 0.0f;
-  for (int k = 0; k < 6; ++k) {
-    const int j = (k + 1) % 6, l = (k + 2) % 6;
-    if (!have[k] || !have[j]) continue;
-    const cv::Point2f edge = v[j] - v[k];
-    const auto inner = static_cast<float>(edge.cross(centre - v[k]));
-    if (inner == 0.0f) return std::nullopt;
-    if (have[l]) {
-      const auto bend = static_cast<float>(edge.cross(v[l] - v[j]));
-      if (bend == 0.0f || bend * turn < 0.0f || bend * inner <= 0.0f) return std::nullopt;  // not convex
-      turn = bend;
-    }
-    ma = std::min(ma, static_cast<float>(edge.cross(pa - v[k])) / inner);
-    mb = std::min(mb, static_cast<float>(edge.cross(pb - v[k])) / inner);
-  }
-  return std::make_pair(ma, mb);
+  return std::make_pair(cell->margin(pa), cell->margin(pb));
 }
 
 bool hasSeam(const ViewMarkers& m, float stretch, const CornerFinder& near) {

@@ -38,8 +38,8 @@ struct OffMotion {
 };
 
 struct RescueLimits {
-  float rescue_fraction = 0.15f;   // of spacing: the completions' bound
-  float max_link_stretch = 2.0f;   // a link may grow or shrink by this factor per frame
+  float rescue_fraction;           // of spacing: the completions' bound (GridTrackerOptions)
+  float max_link_stretch;          // a link may grow or shrink by this factor per frame (GridTrackerOptions)
   float near_swap_squares = 0.4f;  // further from its place is a near-swap (issue 16's gross error)
 };
 
