@@ -6,6 +6,13 @@
 namespace onetip::vision {
 namespace {
 
+// Median of the first n (at most 8) values, reordering them.
+float median8(std::array<float, 8>& v, size_t n) {
+  for (size_t a = 1; a < n; ++a)  // insertion sort: at most 8 values
+    for (size_t b = a; b > 0 && v[b - 1] > v[b]; --b) std::swap(v[b - 1], v[b]);
+  return n % 2 ? v[n / 2] : 0.5f * (v[n / 2 - 1] + v[n / 2]);
+}
+
 class Grower {
  public:
   Grower(const MarkerPattern& pattern, const GrowthState& state, const GrowthOptions& options, const CornerFinder& find)
@@ -81,7 +88,9 @@ class Grower {
         const size_t i = static_cast<size_t>(id);
         tried_with_[i] = foundNeighbours(id);
         ++attempts_[i];
-        search(id, fromNeighbours(id), o_.search_radius);
+        if (search(id, fromNeighbours(id), o_.search_radius)) continue;
+        if (const auto own = predictFromOwnTrack(p_, *s_.last, *s_.motion, *s_.moving, result_.markers, id))
+          search(id, *own, o_.search_radius);
       }
     }
   }
@@ -120,12 +129,28 @@ std::optional<cv::Point2f> predictFromNeighbourMotion(const MarkerPattern& p, co
     }
   }
   if (n == 0) return std::nullopt;
-  const auto median = [n](std::array<float, 8>& v) {
-    for (size_t a = 1; a < n; ++a)  // insertion sort: at most 8 values
-      for (size_t b = a; b > 0 && v[b - 1] > v[b]; --b) std::swap(v[b - 1], v[b]);
-    return n % 2 ? v[n / 2] : 0.5f * (v[n / 2 - 1] + v[n / 2]);
-  };
-  return last[static_cast<size_t>(id)] + cv::Point2f(median(dx), median(dy));
+  return last[static_cast<size_t>(id)] + cv::Point2f(median8(dx, n), median8(dy, n));
+}
+
+std::optional<cv::Point2f> predictFromOwnTrack(const MarkerPattern& p, const std::vector<cv::Point2f>& last,
+                                               const std::vector<cv::Point2f>& motion,
+                                               const std::vector<std::uint8_t>& moving, const ViewMarkers& now, int id) {
+  if (!moving[static_cast<size_t>(id)]) return std::nullopt;
+  std::array<float, 8> dx{}, dy{};
+  size_t n = 0;
+  const int r = p.rowOf(id), c = p.colOf(id);
+  for (int dr = -1; dr <= 1; ++dr) {
+    for (int dc = -1; dc <= 1; ++dc) {
+      if ((!dr && !dc) || r + dr < 0 || c + dc < 0 || r + dr >= p.rows || c + dc >= p.cols) continue;
+      const size_t k = static_cast<size_t>(p.id(r + dr, c + dc));
+      if (!now.valid[k] || !moving[k]) continue;
+      const cv::Point2f change = now.point[k] - last[k] - motion[k];
+      dx[n] = change.x, dy[n] = change.y, ++n;
+    }
+  }
+  if (n == 0) return std::nullopt;
+  const size_t i = static_cast<size_t>(id);
+  return last[i] + motion[i] + cv::Point2f(median8(dx, n), median8(dy, n));
 }
 
 GrowthResult growGrid(const MarkerPattern& pattern, const GrowthState& state, const GrowthOptions& options,

@@ -9,9 +9,11 @@
 //     within seed_radius x spacing;
 //  2. growth: in passes, each marker not yet found that has found
 //     8-neighbours (the best-connected first) is searched at
-//     predictFromNeighbourMotion (below) within search_radius x spacing; a marker is
-//     searched at most max_attempts times, again only once more of its
-//     neighbours are found;
+//     predictFromNeighbourMotion (below) within search_radius x spacing, and
+//     where nothing is found there and its motion is known, once more at
+//     predictFromOwnTrack (below: a marker sliding past neighbours that stick
+//     keeps its own velocity); a marker is searched at most max_attempts
+//     times, again only once more of its neighbours are found;
 //  3. markers no growth reaches (no found neighbour) are searched at their
 //     own temporal prediction (last + velocity_gain x motion), and growth
 //     continues from those found.
@@ -43,6 +45,7 @@ struct GrowthState {
   const std::vector<cv::Point2f>* last = nullptr;     // per id: last known position
   const std::vector<std::uint8_t>* measured = nullptr;  // per id: measured in the last frame
   const std::vector<cv::Point2f>* motion = nullptr;   // per id: last frame's motion (0 where unknown)
+  const std::vector<std::uint8_t>* moving = nullptr;  // per id: motion known (measured in the last two frames)
   const std::vector<float>* spacing = nullptr;        // per id: local spacing, pixels
 };
 
@@ -64,6 +67,19 @@ struct GrowthResult {
 std::optional<cv::Point2f> predictFromNeighbourMotion(const MarkerPattern& pattern, const std::vector<cv::Point2f>& last,
                                                       const std::vector<std::uint8_t>& measured, const ViewMarkers& now,
                                                       int id, bool measured_only);
+
+// Where its own track puts marker `id`, its velocity corrected by the change
+// of its neighbours' motion in this frame:
+//   last[id] + m(id) + median over found 8-neighbours nb with known motion of
+//   (now[nb] - last[nb] - m(nb)),
+// m: the last frame's motion; the median component-wise. A marker that slides
+// on while its neighbours stick (or sticks while they slide) keeps its own
+// motion, which their motion alone cannot give; a reversal or a stop of the
+// whole field moves it with them. Nothing when the motion of `id` or of every
+// found neighbour is unknown.
+std::optional<cv::Point2f> predictFromOwnTrack(const MarkerPattern& pattern, const std::vector<cv::Point2f>& last,
+                                               const std::vector<cv::Point2f>& motion,
+                                               const std::vector<std::uint8_t>& moving, const ViewMarkers& now, int id);
 
 GrowthResult growGrid(const MarkerPattern& pattern, const GrowthState& state, const GrowthOptions& options,
                       const CornerFinder& find);

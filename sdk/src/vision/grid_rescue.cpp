@@ -29,13 +29,22 @@ class Rescue {
     return links.bad == 0 && links.crossed == 0;
   }
 
+  // Distance in squares from the nearest of the three models' places (header).
+  float residual(const OffMotion& off) const {
+    const size_t i = static_cast<size_t>(off.id);
+    float best = std::min(off.residual_squares, off.track_squares);
+    if (const auto q = predictFromNeighbours(trusted_, p_.rowOf(off.id), p_.colOf(off.id)))
+      best = std::min(best, static_cast<float>(cv::norm(m_.point[i] - *q)) / spacing_[i]);
+    return best;
+  }
+
   // Grade in 0..1 of a marker taken back alone, or below 0.
   float single(const OffMotion& off) const {
     const size_t i = static_cast<size_t>(off.id);
     const int row = p_.rowOf(off.id), col = p_.colOf(off.id);
     if (!linksPass(off.id)) return -1.0f;
     const auto margin = cellMargin(trusted_, row, col, m_.point[i]);
-    if (margin && *margin > 0.0f && off.residual_squares <= limits_.near_swap_squares) return 1.0f;
+    if (margin && *margin > 0.0f && residual(off) <= limits_.near_swap_squares) return 1.0f;
     const float limit = limits_.rescue_fraction * spacing_[i];
     const auto worst = closeCompletion(trusted_, row, col, m_.point[i]);
     return worst && *worst <= limit ? 1.0f - *worst / limit : -1.0f;
@@ -72,8 +81,8 @@ class Rescue {
         const int a = pending[x].id, b = pending[y].id;
         const int dr = p_.rowOf(b) - p_.rowOf(a), dc = p_.colOf(b) - p_.colOf(a);
         if (!((dr == 0 && dc == 1) || (dr == 1 && dc == 0))) continue;  // b after a along an axis
-        if (pending[x].residual_squares > limits_.near_swap_squares ||
-            pending[y].residual_squares > limits_.near_swap_squares || !linksPass(a) || !linksPass(b))
+        if (residual(pending[x]) > limits_.near_swap_squares || residual(pending[y]) > limits_.near_swap_squares ||
+            !linksPass(a) || !linksPass(b))
           continue;
         const auto margins = pairCellMargins(trusted_, p_.rowOf(a), p_.colOf(a), dr, dc, m_.point[static_cast<size_t>(a)],
                                              m_.point[static_cast<size_t>(b)]);

@@ -7,8 +7,14 @@
 // neighbours neither flip, stretch nor cross and either
 //  - it lies inside the cell of its four passing neighbours (cellMargin,
 //    grid_checks.hpp: the only corner there is its own; open on the
-//    pattern's border) and at most near_swap_squares from where their motion
-//    puts it (further is a near-swap); confidence 0.5; or
+//    pattern's border) and at most near_swap_squares from where one of three
+//    models of the smooth field puts it (further is a near-swap): their
+//    motion, their spatial completion (predictFromNeighbours over the
+//    passing neighbours) or its own track (predictFromOwnTrack); at a
+//    stick-slip edge the first misses by the jump, in a lattice sheared
+//    within a cell the second, and at the onset of a slip the third, but a
+//    detector's error of more than near_swap_squares is off all three where
+//    the field is smooth; confidence 0.5; or
 //  - every midpoint and parallelogram completion by those neighbours (at
 //    least three, one a midpoint) puts it within rescue_fraction x spacing
 //    (closeCompletion, grid_prediction.hpp); confidence 0.5 x (1 - that
@@ -16,8 +22,8 @@
 // When no single marker can be taken back, two neighbouring ones that each
 // lack the other as a vertex are taken back together when both lie inside
 // the cell of the pair (pairCellMargins: their six neighbours' hexagon,
-// holding their two corners alone), the right way round and within
-// near_swap_squares of their neighbours' motion; confidence 0.5 each.
+// holding their two corners alone), the right way round and each within
+// near_swap_squares of one of those models; confidence 0.5 each.
 // A marker on a neighbour's corner is a vertex of such a cell and a square
 // from those completions; a region whose ids slipped together has no
 // passing neighbours inside it. Units: view pixels; residuals in local
@@ -32,9 +38,12 @@
 
 namespace onetip::vision {
 
+constexpr float kNoTrack = 1e9f;  // OffMotion::track_squares of a marker whose motion is unknown
+
 struct OffMotion {
   int id;
   float residual_squares;  // from where the neighbours' motion puts it, in local spacings
+  float track_squares;     // from where its own track puts it (predictFromOwnTrack), or kNoTrack
 };
 
 struct RescueLimits {

@@ -110,12 +110,14 @@ GridTracker::Prediction GridTracker::predict() const {
   p.point.assign(static_cast<size_t>(n), cv::Point2f(0, 0));
   p.radius.assign(static_cast<size_t>(n), 0.0f);
   p.spacing.assign(static_cast<size_t>(n), 0.0f);
+  p.motion.assign(static_cast<size_t>(n), cv::Point2f(0, 0));
+  p.moving.assign(static_cast<size_t>(n), 0);
   std::vector<std::uint8_t> have(static_cast<size_t>(n), 0);
   for (int id = 0; id < n; ++id) {
     const size_t i = static_cast<size_t>(id);
     if (!current_.valid[i]) continue;
-    p.point[i] = current_.point[i];
-    if (previous_.valid[i]) p.point[i] += options_.velocity_gain * (current_.point[i] - previous_.point[i]);
+    if (previous_.valid[i]) p.motion[i] = current_.point[i] - previous_.point[i], p.moving[i] = 1;
+    p.point[i] = current_.point[i] + options_.velocity_gain * p.motion[i];
     have[i] = 1;
   }
   // Lost markers: from the predicted neighbours, else their last estimate.
@@ -210,18 +212,15 @@ GridResult GridTracker::trackWith(const std::function<std::optional<cv::Point2f>
                                   const RegionDetector& region, const ViewHalf& view) {
   const Prediction pred = predict();
   const size_t n = static_cast<size_t>(pattern_.count());
-  std::vector<cv::Point2f> motion(n, cv::Point2f(0, 0));
   std::vector<float> shortest(n);  // the growth's searches scale with the shortest link
-  for (size_t i = 0; i < n; ++i) {
-    if (current_.valid[i] && previous_.valid[i]) motion[i] = current_.point[i] - previous_.point[i];
-    shortest[i] = pred.radius[i] / options_.search_radius;
-  }
+  for (size_t i = 0; i < n; ++i) shortest[i] = pred.radius[i] / options_.search_radius;
   const std::vector<float>& spacing = pred.spacing;
   std::vector<float> sorted = spacing;
   std::nth_element(sorted.begin(), sorted.begin() + static_cast<long>(n / 2), sorted.end());
   const float median_spacing = sorted[n / 2];  // reach of the whole-view detections
   const GrowthOptions growth{options_.seed_speed, options_.seed_radius, options_.search_radius, options_.velocity_gain, 2};
-  GrowthResult grown = growGrid(pattern_, GrowthState{&current_.point, &current_.valid, &motion, &shortest}, growth, near);
+  const GrowthState state{&current_.point, &current_.valid, &pred.motion, &pred.moving, &shortest};
+  GrowthResult grown = growGrid(pattern_, state, growth, near);
   ViewMarkers candidates = std::move(grown.markers);
   bool relabelled = false;
   if (grown.seeds < options_.min_seeds) {
@@ -320,8 +319,11 @@ GridResult GridTracker::finish(const Prediction& pred, ViewMarkers m) {
     if (q) {
       const float residual = static_cast<float>(cv::norm(p - *q));
       if (residual > tolerance) {
+        const auto own = predictFromOwnTrack(pattern_, current_.point, pred.motion, pred.moving, m, id);
+        const float spacing = pred.spacing[static_cast<size_t>(id)];
         reject.push_back(id);
-        off_motion.push_back({id, residual / pred.spacing[static_cast<size_t>(id)]});
+        const float track = own ? static_cast<float>(cv::norm(p - *own)) / spacing : kNoTrack;
+        off_motion.push_back({id, residual / spacing, track});
         continue;
       }
       agreement = 1.0f - residual / tolerance;

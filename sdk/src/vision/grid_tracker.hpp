@@ -12,8 +12,10 @@
 // last position, and every other marker is searched where its found
 // neighbours' motion in this frame puts it (the deformation field is smooth),
 // so a reversal or a sudden start of a sliding finger moves the prediction
-// with the field. With fewer than min_seeds seeds (the whole pattern moved,
-// or the last frame was lost), the frame is detected whole and relabelled
+// with the field; where nothing is found there, once more where its own
+// track puts it (a marker sliding past neighbours that stick). With fewer
+// than min_seeds seeds (the whole pattern moved, or the last frame was
+// lost), the frame is detected whole and relabelled
 // through the board's links, anchored to the last ids by the part of the
 // pattern that moved least (grid_recovery.hpp). A marker still lost is
 // searched where this frame's markers complete it (grid_prediction.hpp; next
@@ -49,10 +51,11 @@
 // a correct marker can lie beyond the tolerance from its neighbours' motion.
 // Such a marker (off by motion alone) is taken back where the lattice still
 // places it (grid_rescue.hpp): inside the cell of its passing neighbours
-// and at most 0.4 of a square (RescueLimits::near_swap_squares) off their
-// motion, or within rescue_fraction x spacing of every completion by them,
-// or, two neighbours off together, inside their pair's cell; confidence at
-// most 0.5.
+// and at most 0.4 of a square (RescueLimits::near_swap_squares) from where
+// their motion, their spatial completion or its own track
+// (grid_growth.hpp, predictFromOwnTrack) puts it, or within rescue_fraction
+// x spacing of every completion by them, or, two neighbours off together,
+// inside their pair's cell; confidence at most 0.5.
 // Confidence per reported marker, in 0..1 (ViewMarkers::confidence):
 //   (1 - residual / (outlier_fraction x spacing)) x (good links / links),
 // residual being that distance; 0.5 x the link factor when no neighbour can
@@ -135,6 +138,8 @@ class GridTracker {
     std::vector<cv::Point2f> point;  // per id, view pixels
     std::vector<float> radius;       // per id, search radius in pixels (of the shortest link)
     std::vector<float> spacing;      // per id, local spacing (median link) in pixels
+    std::vector<cv::Point2f> motion;  // per id, the last frame's motion in pixels (0 where unknown)
+    std::vector<std::uint8_t> moving; // per id, motion known (measured in the last two frames)
   };
   // Corners around the given view points, up to `reach` pixels from them
   // (the image path detects in their bounding box; the list path returns all).

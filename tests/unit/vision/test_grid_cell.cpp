@@ -12,7 +12,13 @@
 //   dropped even inside its cell (ACornerOffItsPlace... in test_fast_motion.cpp);
 // - the pair's cell (pairCellMargins): the hexagon of two neighbours' six
 //   neighbours holds their two corners alone (2/3 each, every other corner at
-//   or below 0), the right way round; two neighbours off together are kept.
+//   or below 0), the right way round; two neighbours off together are kept;
+// - the rescue's three models (rescueOffMotion, grid_rescue.hpp): a marker
+//   half a square off its neighbours' motion is kept where their spatial
+//   completion or its own track puts it, dropped 0.45 of a square off all
+//   three; in the tracker, a marker sliding on while its neighbours stand
+//   still is kept in its place by its own track (predictFromOwnTrack; the
+//   test fails without that model).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -20,6 +26,7 @@
 
 #include "synthetic_board.hpp"
 #include "vision/grid_checks.hpp"
+#include "vision/grid_rescue.hpp"
 #include "vision/grid_tracker.hpp"
 
 namespace onetip::vision {
@@ -104,6 +111,37 @@ TEST(GridCell, PairCellHoldsTheTwoCornersAloneTheRightWayRound) {
   EXPECT_NEAR(border->second, 2.0f / 3.0f, 1e-4f);
 }
 
+// A 7 x 7 lattice of 30 px squares turned by 20 deg, (3, 3) at `centre`
+// (lattice units) and rejected as 0.5 of a square off its neighbours' motion,
+// its own track putting it at `track_squares` from there; whether the rescue
+// keeps it.
+bool rescued(cv::Point2f centre, float track_squares) {
+  const MarkerPattern pattern{7, 7, 1.0};
+  const auto at = [](float r, float c) {
+    const float a = 20.0f * static_cast<float>(M_PI) / 180.0f, s = 30.0f;
+    return cv::Point2f(s * (std::cos(a) * c - std::sin(a) * r) + 200, s * (std::sin(a) * c + std::cos(a) * r) + 200);
+  };
+  ViewMarkers m(pattern);
+  for (int r = 0; r < 7; ++r)
+    for (int c = 0; c < 7; ++c) m.set(pattern.id(r, c), at(static_cast<float>(r), static_cast<float>(c)));
+  const int id = pattern.id(3, 3);
+  const ViewMarkers before = m;
+  m.set(id, at(centre.y, centre.x));
+  std::vector<int> reject{id};
+  std::vector<float> confidence(static_cast<size_t>(pattern.count()), 1.0f), spacing(confidence.size(), 30.0f);
+  rescueOffMotion(pattern, m, LatticeView{7, 7, &before.point, &before.valid}, spacing, {{id, 0.5f, track_squares}},
+                  RescueLimits{0.15f, 2.0f}, reject, confidence);
+  return reject.empty();
+}
+
+TEST(GridRescue, KeptWhereOneModelOfTheFieldPutsItDroppedOffAllThree) {
+  EXPECT_TRUE(rescued({3, 3}, kNoTrack));             // where the neighbours complete it
+  EXPECT_FALSE(rescued({3.45f, 3}, kNoTrack));        // 0.45 of a square off their completion and motion
+  EXPECT_TRUE(rescued({3.45f, 3}, 0.1f));             // ... but where its own track puts it
+  EXPECT_FALSE(rescued({3.45f, 3}, 0.45f));           // off all three
+  EXPECT_FALSE(rescued({3.0f, 3.55f}, 0.0f));         // on its track but nearer a neighbour than its own place
+}
+
 const MarkerPattern kPattern{17, 17, 1.2};
 const cv::Size kView(960, 1080);
 
@@ -171,6 +209,24 @@ TEST_F(GridCellTracking, TwoNeighboursOffTogetherAreKeptAsAPair) {
     EXPECT_LT(cv::norm(r.markers.point[id] - (tracker.rest().point[id] + cv::Point2f(0.38f * 40, 0))), 0.01) << row;
     EXPECT_FLOAT_EQ(r.markers.confidence[id], 0.5f) << row;
   }
+}
+
+TEST_F(GridCellTracking, AMarkerSlidingOnPastNeighboursThatStandStillIsFoundAndKept) {
+  // (8, 8) moves 0.1 of a square along x, then 0.42 more, every other marker
+  // stands still: in the second frame its neighbours' motion puts it 0.42 of
+  // a square behind its corner, beyond the search radius (0.4) and the
+  // near-swap bound, its own track (last + its motion) 0.32 of a square (its
+  // link to the right shrinks 1.9x, inside the 2x a link may change).
+  GridTracker tracker(kPattern);
+  ASSERT_TRUE(tracker.initialize(view, detector).ok());
+  const size_t id = static_cast<size_t>(kPattern.id(8, 8));
+  ASSERT_TRUE(tracker.track(stickSlipFrame(tracker, rest, 8, 0.0f, 0.1f, 40), view).markers.valid[id]);
+  const GridResult r = tracker.track(stickSlipFrame(tracker, rest, 8, 0.0f, 0.52f, 40), view);
+  ASSERT_TRUE(r.ok()) << r.message;
+  ASSERT_TRUE(r.markers.valid[id]);
+  EXPECT_LT(cv::norm(r.markers.point[id] - (tracker.rest().point[id] + cv::Point2f(0.52f * 40, 0))), 0.01);
+  EXPECT_FLOAT_EQ(r.markers.confidence[id], 0.5f);
+  EXPECT_EQ(r.found, kPattern.count());
 }
 
 }  // namespace
