@@ -95,16 +95,23 @@ def conditions_chart(data, out_dir):
     plt.close(fig)
 
 
+TURN_BINS = [("0", 0, 1e-9), ("0-1", 1e-9, 1), ("1-5", 1, 5), ("5-15", 5, 15), (">= 15", 15, 1e9)]
+
+
 def envelope_chart(data, out_dir):
     keys = [("model", "contact model"), ("indenter", "indenter"), ("markers", "markers per side"),
-            ("fps", "frame rate")]
-    fig, grid = plt.subplots(1, len(keys), figsize=(4.5 * len(keys), 4))
+            ("fps", "frame rate"), ("gross_slip_turn_deg", "the truth's turn in gross slip (deg)")]
+    fig, axes = plt.subplots(2, 3, figsize=(13.5, 8))
+    grid = axes.flatten()
+    grid[-1].axis("off")
     for ax, (key, label) in zip(grid, keys):
         for offset, ((_, name, colour), rs) in zip((-0.2, 0.2), data):
             rs = [r for r in rs if r["level"] == "field"]
             if key == "fps":
                 bins = [(15, 30), (30, 60), (60, 120), (120, 241)]
                 groups = [("%d-%d" % b, [r for r in rs if b[0] <= float(r["fps"]) < b[1]]) for b in bins]
+            elif key == "gross_slip_turn_deg":
+                groups = [(label_, [r for r in rs if lo <= float(r[key]) < hi]) for label_, lo, hi in TURN_BINS]
             else:
                 values = sorted({r[key] for r in rs}, key=lambda v: (len(v), v))
                 groups = [(v, [r for r in rs if r[key] == v]) for v in values]
@@ -115,7 +122,8 @@ def envelope_chart(data, out_dir):
         ax.set_xlabel(label)
         ax.set_ylim(0, 100)
     grid[0].set_ylabel("runs diverged (%)")
-    grid[0].legend(fontsize=8, loc="lower left")
+    grid[3].set_ylabel("runs diverged (%)")
+    grid[-1].legend(*grid[0].get_legend_handles_labels(), fontsize=9, loc="center")
     fig.suptitle("Failure envelope: share of runs with an axis beyond 1 mm / 5 deg for more than 3 frames")
     fig.tight_layout()
     fig.savefig(os.path.join(out_dir, "campaign_envelope.png"), dpi=80)
@@ -201,6 +209,13 @@ def main():
             rs = rows(path)
             data.append(((file, name, colour), rs))
             table += summary(rs, name)
+    # The truth's turn in gross slip is a condition of the seed (same simulator,
+    # same seeds): runs from files written before it was a column borrow it.
+    turn = {(r["level"], r["seed"]): r["gross_slip_turn_deg"] for _, rs in data for r in rs
+            if r.get("gross_slip_turn_deg")}
+    for _, rs in data:
+        for r in rs:
+            r.setdefault("gross_slip_turn_deg", turn.get((r["level"], r["seed"]), "nan"))
     conditions_chart(data, out_dir)
     envelope_chart(data, out_dir)
     accuracy_time_chart(data, out_dir)
@@ -215,6 +230,13 @@ def main():
         print(row["estimator"], row["level"], "runs", row["runs"], "diverged", row["diverged"],
               "median", " ".join("%.3f" % row["median_" + a] for a in AXES),
               "p95", " ".join("%.3f" % row["p95_" + a] for a in AXES))
+    for (_, name, _), rs in data:
+        for level in ("field", "image"):
+            for label_, lo, hi in TURN_BINS:
+                g = [r for r in rs if r["level"] == level and lo <= float(r["gross_slip_turn_deg"]) < hi]
+                if g:
+                    print("%s %s, truth turns %s deg in gross slip: %d runs, %d diverged" % (
+                        name, level, label_, len(g), sum(r["diverged"] == "1" for r in g)))
 
 
 if __name__ == "__main__":

@@ -91,7 +91,7 @@ std::vector<std::string> header() {
   for (const char* axis : {"dx", "dy", "dz", "yaw", "pitch", "roll"}) h.push_back(std::string("max_") + axis);
   for (const char* c : {"longest_excess", "first_excess_frame", "excess_axis", "excess_truth_state", "excess_model",
                         "diverged", "ms_per_frame", "marker_rmse_mm", "stick_precision", "stick_recall",
-                        "excess_true_stick"})
+                        "excess_true_stick", "gross_slip_turn_deg"})
     h.push_back(c);
   return h;
 }
@@ -119,6 +119,7 @@ std::vector<std::string> row(const char* level, const sim::RandomConditions& c, 
   r.push_back(num(s.stick_precision));
   r.push_back(num(s.stick_recall));
   r.push_back(std::to_string(s.excess_true_stick));
+  r.push_back(num(s.gross_slip_turn_deg));
   return r;
 }
 

@@ -37,8 +37,14 @@ RunScore scoreRun(const std::vector<ReplayFrame>& frames) {
   pose::PoseModel stretch_model = pose::PoseModel::none;
   int stretch_true_stick = -1;
   long labelled = 0, truly = 0, both = 0;
+  std::array<double, 3> turned{};  // yaw, pitch, roll while in gross slip
   for (size_t k = 0; k < frames.size(); ++k) {
     const ReplayFrame& f = frames[k];
+    if (k > 0 && f.gt_contact && frames[k - 1].gt_contact && f.gt_state == ContactState::slip) {
+      turned[0] += std::abs(f.gt.yaw - frames[k - 1].gt.yaw);
+      turned[1] += std::abs(f.gt.pitch - frames[k - 1].gt.pitch);
+      turned[2] += std::abs(f.gt.roll - frames[k - 1].gt.roll);
+    }
     if (!f.gt_contact) {
       stretch = 0;
       continue;
@@ -88,6 +94,7 @@ RunScore scoreRun(const std::vector<ReplayFrame>& frames) {
   s.stick_recall = truly ? static_cast<double>(both) / static_cast<double>(truly) : 0.0;
   for (size_t a = 0; a < 6; ++a) s.linear_rmse[a] = s.linear_frames ? std::sqrt(squares[a] / s.linear_frames) : 0.0;
   s.diverged = s.longest_excess > kDivergenceFrames;
+  s.gross_slip_turn_deg = std::max({turned[0], turned[1], turned[2]});
   return s;
 }
 

@@ -16,6 +16,11 @@
 // the finger, so they are the set a stick fit needs.
 //   precision = |labelled stick and truly sticking| / |labelled stick|
 //   recall    = |labelled stick and truly sticking| / |truly sticking|
+// Gross-slip turn: over the frames where the truth is in gross slip (no node
+// sticks) and was in contact the frame before, the sum of |change| of each of
+// the truth's yaw, pitch and roll; the largest of the three, deg. While no
+// marker sticks, no marker turns with the finger: a condition of the run,
+// not a score of the estimate.
 #pragma once
 
 #include <array>
@@ -50,6 +55,7 @@ struct RunScore {
   pose::PoseModel excess_model = pose::PoseModel::none;   // the estimate's model there
   int excess_true_stick = -1;  // markers truly sticking at the first frame of that stretch (-1: none)
   double stick_precision = 0, stick_recall = 0;  // of the estimate's stick labels (see above; 0 when undefined)
+  double gross_slip_turn_deg = 0;  // the truth's turn while in gross slip (see above)
 };
 
 RunScore scoreRun(const std::vector<ReplayFrame>& frames);

@@ -1,6 +1,7 @@
 // The campaign's judge (campaign_score.hpp) on synthetic frames whose errors
 // are known: divergence needs more than three consecutive frames beyond
-// 1 mm / 5 deg inside the working range; the linear range bounds the RMSE.
+// 1 mm / 5 deg inside the working range; the linear range bounds the RMSE;
+// the truth's turn is summed over its gross-slip frames only.
 #include <gtest/gtest.h>
 
 #include "campaign_score.hpp"
@@ -79,4 +80,15 @@ TEST(CampaignScore, StickLabelsAreJudgedAgainstTheMarkersThatTrulyTouchAndStick)
   s = scoreRun(frames);
   EXPECT_TRUE(s.diverged);
   EXPECT_EQ(s.excess_true_stick, 3);
+}
+
+TEST(CampaignScore, GrossSlipTurnSumsTheTruthsTurnWhileNoMarkerSticks) {
+  std::vector<ReplayFrame> frames(6, frame(0.0, 0.0));
+  const double roll[] = {0, 2, 4, 3, 6, 6};
+  const ContactState state[] = {ContactState::stick, ContactState::slip, ContactState::slip, ContactState::slip,
+                                ContactState::partial_slip, ContactState::slip};
+  for (size_t k = 0; k < frames.size(); ++k) frames[k].gt.roll = roll[k], frames[k].gt_state = state[k];
+  frames[1].gt.yaw = 1.0;  // yaw 0 -> 1 -> 0: 2 deg in all, less than the roll's
+  // In gross slip: frames 1 (+2), 2 (+2), 3 (-1) and 5 (0); frame 4 (+3) is partial slip.
+  EXPECT_NEAR(scoreRun(frames).gross_slip_turn_deg, 5.0, 1e-12);
 }
