@@ -251,10 +251,10 @@ bool AdaptivePoseEstimator::stickingAgain(const contact::ContactField& field, co
   const auto [before, after] = commonFootprints(old, field, members, now);
   const Eigen::Vector2d rho =
       vouched > 0 ? rollingShift(capOf(field, members, now), vouched * turn.axis()) : Eigen::Vector2d::Zero();
-  Eigen::Vector3d lag = after - fit.motion * before;
-  lag.z() = 0;
-  lag.head<2>() -= rho;
-  return lag.norm() < t_.macro_exit_lag_mm + options_.macro_drift_ratio * rho.norm();
+  const Eigen::Vector2d lag = (after - fit.motion * before).head<2>();
+  // Distance from the lag to the segment from no shift to the full rolling shift.
+  const double along = rho.squaredNorm() > 0 ? std::clamp(lag.dot(rho) / rho.squaredNorm(), 0.0, 1.0) : 0.0;
+  return (lag - along * rho).norm() < t_.macro_exit_lag_mm + options_.macro_drift_ratio * rho.norm();
 }
 
 std::optional<Eigen::Isometry3d> AdaptivePoseEstimator::restick(const contact::ContactField& field,
