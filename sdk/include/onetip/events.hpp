@@ -28,7 +28,8 @@ ONETIP_EXPORT double clockSeconds() noexcept;
 
 enum class EventType : std::uint8_t {
   contact_begin = 0,  // a contact starts; the 6-D input restarts from zero
-  contact_end = 1,    // the contact ended; the 6-D input returns to zero
+  contact_end = 1,    // the contact ended; the 6-D input returns to zero (when its finger lifts while
+                      // another stays on the pad, contact_begin for that one follows in the same frame)
   input = 2,          // the 6-D input of a frame in contact (every such frame)
   press = 3,          // the press button went down (dz rose above options.press_mm)
   release = 4,        // the press button went up (dz fell below options.release_mm)

@@ -86,15 +86,17 @@ TrackerResult PoseTracker::update(const MarkerField& now_S, const MarkerField& r
   }
   if (r.contact) fillOutputs(r);
 
-  if (r.step.onset) emit(r, EventType::contact_begin);
-  if (!r.contact && last_.contact) {
+  // A contact ends when the pad is released, or when its finger lifts while
+  // another stays (the estimator then begins a new contact in the same frame).
+  if (last_.contact && (!r.contact || r.step.onset)) {
     if (button_.pressed()) {
       button_.reset();
       emit(r, EventType::release);
     }
-    if (filter_) filter_->reset();
+    if (filter_ && !r.contact) filter_->reset();
     emit(r, EventType::contact_end);
   }
+  if (r.step.onset) emit(r, EventType::contact_begin);
   if (r.state != last_.state) emit(r, EventType::state_changed);
   if (r.contact) {
     emit(r, EventType::input);

@@ -29,7 +29,7 @@ void AdaptivePoseEstimator::reset() {
 }
 
 int AdaptivePoseEstimator::trackedRegion(const contact::ContactField& field) const {
-  int best = 0, best_count = -1;
+  int best = -1, best_count = 0;
   for (size_t r = 0; r < field.regions.size(); ++r) {
     int count = 0;
     for (int id : field.regions[r].markers) count += classifier_.label(id) != MarkerLabel::outside ? 1 : 0;
@@ -347,11 +347,18 @@ PoseStep AdaptivePoseEstimator::update(const contact::ContactField& field, const
     return first;
   }
 
+  const int tracked = trackedRegion(field);
+  if (tracked < 0) {  // the finger tracked lifted while another stays: its contact ended, a new one begins
+    reset();
+    PoseStep first = start(field, now);
+    first.thresholds = t_;
+    return first;
+  }
   PoseStep step;
   step.active = true;
   step.thresholds = t_;
   step.onset_centroid = c0_;
-  step.region = trackedRegion(field);
+  step.region = tracked;
   const contact::ContactRegion& region = field.regions[static_cast<size_t>(step.region)];
   classifier_.retain(region.markers, now);
 

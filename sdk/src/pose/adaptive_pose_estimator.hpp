@@ -70,7 +70,8 @@ namespace onetip::pose {
 
 struct PoseStep {
   bool active = false;           // in contact and tracking
-  bool onset = false;            // first frame of a contact (pose = identity)
+  bool onset = false;            // first frame of a contact (pose = identity); with another
+                                 // finger on the pad it may follow the last frame of one directly
   bool step_limited = false;     // the increment was scaled down (safety limit)
   bool solver_failed = false;    // Ceres or Kabsch failed; the centroid model stood in
   bool stuck_again = false;      // the markers stick again (stickingAgain): a stick model took over from the footprint
@@ -107,6 +108,9 @@ class AdaptivePoseEstimator {
     Eigen::Isometry3d pose;
     double region_size;
   };
+  // The region holding most of the contact's labelled markers, or -1 when
+  // none holds any: the finger tracked has lifted (another keeps the pad in
+  // contact) and its contact has ended.
   int trackedRegion(const contact::ContactField& field) const;
   PoseStep start(const contact::ContactField& field, const MarkerField& now);
   Eigen::Isometry3d solveIncrement(const contact::ContactField& field, const MarkerField& now, PoseStep& step);

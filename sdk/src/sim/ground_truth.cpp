@@ -17,9 +17,16 @@ void GroundTruthPose::update(GroundTruthFrame& f, const MarkerField& rest) {
     f.input = Input6{};
     return;
   }
+  const auto touching = [&](int k) {
+    return static_cast<size_t>(k) < f.indenter_nodes.size() ? f.indenter_nodes[static_cast<size_t>(k)] : 0;
+  };
+  if (active_ && !f.indenter_nodes.empty() && touching(followed_) == 0) active_ = false;  // it lifted, another stays
   if (!active_) {
     active_ = true;
-    onset_pose_ = f.indenter_poses.front();
+    followed_ = 0;
+    for (int k = 1; k < static_cast<int>(f.indenter_poses.size()); ++k)
+      if (touching(k) > touching(followed_)) followed_ = k;
+    onset_pose_ = f.indenter_poses[static_cast<size_t>(followed_)];
     Eigen::Vector3d sum = Eigen::Vector3d::Zero();
     int n = 0;
     for (int i = 0; i < rest.size(); ++i) {
@@ -31,7 +38,8 @@ void GroundTruthPose::update(GroundTruthFrame& f, const MarkerField& rest) {
     }
     c0_ = n > 0 ? Eigen::Vector3d(sum / n) : Eigen::Vector3d::Zero();
   }
-  const Eigen::Isometry3d T = f.indenter_poses.front() * onset_pose_.inverse();
+  f.followed = followed_;
+  const Eigen::Isometry3d T = f.indenter_poses[static_cast<size_t>(followed_)] * onset_pose_.inverse();
   f.input = input6FromMotion(T, c0_);
 }
 

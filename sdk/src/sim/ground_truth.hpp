@@ -4,11 +4,17 @@
 // applied to the exact marker field, so that a perfect measurement reproduces
 // it: the pad is "in contact" while the largest marker deformation modulus
 // exceeds contact_threshold_mm (0.1 mm); at onset T_onset is the finger's pose
-// (indenter 0) and c0 the centroid of the rest positions of the markers whose
+// (the followed indenter, below) and c0 the centroid of the rest positions of the markers whose
 // deformation modulus is at least region_fraction (50%) of the largest normal
 // deformation. Then T = T_now * inverse(T_onset) and [dx..roll] per
 // core/rotation.hpp. The state column comes from the contact model's nodes
 // (no slip: stick; all slip: slip; otherwise partial_slip).
+// Several fingers (the SDK tracks one contact at a time, largest first): the
+// finger followed is the indenter touching the most pad nodes at onset; when
+// it touches none while the pad is still in contact (it lifted, another
+// finger stays), its contact has ended and a new one begins on the indenter
+// touching the most nodes then (T_onset and c0 taken again). With one
+// indenter this never happens: a pad no indenter touches is at rest.
 #pragma once
 
 #include <Eigen/Geometry>
@@ -29,19 +35,23 @@ struct GroundTruthFrame {
   ContactState state = ContactState::none;
   Input6 input;                         // zero when not in contact
   std::vector<Eigen::Isometry3d> indenter_poses;  // S
+  std::vector<int> indenter_nodes;      // per indenter: pad nodes it touches
+  int followed = 0;                     // the indenter whose motion `input` is (see above)
 };
 
 class GroundTruthPose {
  public:
   explicit GroundTruthPose(double contact_threshold_mm = 0.1, double region_fraction = 0.5)
       : threshold_(contact_threshold_mm), fraction_(region_fraction) {}
-  // Fills frame.in_contact and frame.input from frame.markers (S), the rest
-  // markers (S) and indenter 0's pose (S).
+  // Fills frame.in_contact, frame.followed and frame.input from
+  // frame.markers (S), the rest markers (S), frame.indenter_nodes and the
+  // followed indenter's pose (S).
   void update(GroundTruthFrame& frame, const MarkerField& rest);
 
  private:
   double threshold_, fraction_;
   bool active_ = false;
+  int followed_ = 0;
   Eigen::Isometry3d onset_pose_ = Eigen::Isometry3d::Identity();
   Eigen::Vector3d c0_ = Eigen::Vector3d::Zero();
 };

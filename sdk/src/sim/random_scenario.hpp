@@ -25,7 +25,8 @@
 //     hold still; lift-off is sometimes taken while still sliding (lift-off in
 //     mid-slip). With probability 0.15 (finger or sphere) a second, shallower
 //     finger touches 6-7 mm away and may slide (two fingers; indenter 0 stays
-//     the deeper one, the one the ground truth follows).
+//     the deeper one; the ground truth follows the finger touching most
+//     nodes at onset, and the other once that one lifts: ground_truth.hpp).
 // Keyframes are linear in time between targets (simulator: linear blend).
 #pragma once
 

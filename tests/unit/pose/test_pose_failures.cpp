@@ -178,6 +178,50 @@ TEST(FailurePoints, TwoFingersAreSeparateRegionsAndTheFirstIsTracked) {
     }
 }
 
+TEST(FailurePoints, WhenTheTrackedFingerLiftsWhileAnotherStaysANewContactBegins) {
+  // Finger A presses 1 mm at x = -5 and slides 1.5 mm along x; finger B presses 0.6 mm at x = +5 and
+  // holds; A lifts at t = 1.6-1.9 s while B stays. A's contact has ended: the output must not carry A's
+  // 1.5 mm on to B (it did: one contact ran on, its pose A's, its markers B's). The tracker ends the
+  // contact and begins one on B in the same frame; the truth then follows B (sim/ground_truth.hpp).
+  sim::Scenario sc = sampleScenario("two_finger");
+  sim::Keyframe k;
+  k.t = 0.0, k.x = -5, k.depth = -0.3;
+  std::vector<sim::Keyframe> a{k};
+  k.t = 0.5, k.depth = 1.0;
+  a.push_back(k);
+  k.t = 1.0;
+  a.push_back(k);
+  k.t = 1.6, k.x = -3.5;
+  a.push_back(k);
+  k.t = 1.9, k.depth = -0.5;
+  a.push_back(k);
+  k.t = 2.5;
+  a.push_back(k);
+  k = sim::Keyframe{};
+  k.t = 0.0, k.x = 5, k.depth = -0.3;
+  std::vector<sim::Keyframe> b{k};
+  k.t = 0.5, k.depth = 0.6;
+  b.push_back(k);
+  k.t = 2.5;
+  b.push_back(k);
+  sc.indenters[0].keyframes = a;
+  sc.indenters[1].keyframes = b;
+  const auto frames = replay(sc);
+  int handovers = 0, after = 0;
+  for (size_t i = 1; i < frames.size(); ++i) {
+    const auto& ev = frames[i].events;
+    const bool ended = std::count(ev.begin(), ev.end(), input::EventType::contact_end) > 0;
+    const bool began = std::count(ev.begin(), ev.end(), input::EventType::contact_begin) > 0;
+    if (ended && began && frames[i].contact) ++handovers;
+    if (frames[i].t < 2.0 || !frames[i].contact) continue;
+    ++after;  // A has left the pad: B's contact, B holds still
+    EXPECT_LT(std::hypot(frames[i].raw.dx, frames[i].raw.dy), 0.2) << frames[i].t;
+    EXPECT_LT(std::hypot(frames[i].gt.dx, frames[i].gt.dy), 0.05) << frames[i].t;
+  }
+  EXPECT_EQ(handovers, 1);
+  EXPECT_GT(after, 10);
+}
+
 TEST(FailurePoints, ATiltingPlateIsNotReadAsASlide) {
   // complex.yaml: a pressed 20 mm plate tilts back, left, tip and right by 6 deg.
   // Its footprint swings far over the pad while every marker sticks; a flat cap
