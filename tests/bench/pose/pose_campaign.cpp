@@ -147,7 +147,7 @@ std::vector<ReplayFrame> runField(const Recording& rec, input::PoseTrackerOption
 void writeTrace(const std::vector<ReplayFrame>& frames, const std::string& path) {
   std::vector<std::string> h = {"frame", "t", "gt_contact", "gt_state", "contact", "state", "model",
                                 "region_markers", "gt_contact_markers", "region_in_contact", "n_stick", "n_slip",
-                                "gt_stick", "stick_true"};
+                                "gt_stick", "stick_true", "regions"};
   for (const char* axis : {"dx", "dy", "dz", "yaw", "pitch", "roll"}) h.push_back(std::string("gt_") + axis);
   for (const char* axis : {"dx", "dy", "dz", "yaw", "pitch", "roll"}) h.push_back(axis);
   CsvWriter out(path, h);
@@ -164,7 +164,7 @@ void writeTrace(const std::vector<ReplayFrame>& frames, const std::string& path)
                                   std::to_string(f.region_markers), std::to_string(touching),
                                   std::to_string(region_touching), std::to_string(f.n_stick),
                                   std::to_string(f.n_slip), std::to_string(countTrulySticking(f)),
-                                  std::to_string(countLabelledTrulySticking(f))};
+                                  std::to_string(countLabelledTrulySticking(f)), std::to_string(f.regions)};
     for (double v : f.gt.asArray()) r.push_back(num(v));
     for (double v : f.raw.asArray()) r.push_back(num(v));
     out.row(r);
