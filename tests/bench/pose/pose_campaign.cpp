@@ -42,12 +42,14 @@ struct Args {
   std::string trace_scenario;
   std::string trace_out = "campaign_trace.csv";
   double trace_noise_mm = -1;  // < 0: the run's own (the campaign's noise per grey level)
+  bool trace_images = false;   // the trace through rendered frames and the real front end
 };
 
 constexpr const char* kUsage =
     "usage: pose_campaign --out runs.csv [--runs N] [--image-runs M] [--image-max-frames F] [--first-seed S]\n"
     "       pose_campaign (--trace SEED | --trace-scenario FILE.yaml) [--trace-out frames.csv]\n"
-    "                     [--trace-noise-mm SIGMA]  (marker noise per axis; the estimator is told it as its prior)\n";
+    "                     [--trace-noise-mm SIGMA]  (marker noise per axis; the estimator is told it as its prior)\n"
+    "                     [--trace-images 1]  (through rendered frames and the real front end instead)\n";
 
 [[noreturn]] void usageError(const std::string& why) {
   std::fprintf(stderr, "pose_campaign: %s\n%s", why.c_str(), kUsage);
@@ -73,6 +75,7 @@ Args parse(int argc, char** argv) {
     else if (k == "--trace-scenario") a.trace_scenario = v;
     else if (k == "--trace-out") a.trace_out = v;
     else if (k == "--trace-noise-mm") a.trace_noise_mm = std::stod(v);
+    else if (k == "--trace-images") a.trace_images = v == "1";
     else usageError("unknown option " + k);
   }
   if (a.out.empty() && a.trace < 0 && a.trace_scenario.empty()) usageError("--out is required for a campaign");
@@ -188,7 +191,7 @@ int main(int argc, char** argv) {
       o.tracker.pose.self.prior_noise_mm = std::max(args.trace_noise_mm, 1e-5);
     }
     double ms = 0;
-    const auto frames = runField(record(rs.scenario, o), o.tracker, ms);
+    const auto frames = args.trace_images ? replayRendered(rs.scenario).frames : runField(record(rs.scenario, o), o.tracker, ms);
     writeTrace(frames, args.trace_out);
     const RunScore s = scoreRun(frames);
     std::printf("%s: diverged %d (longest %d from frame %d)\n", rs.scenario.name.c_str(), s.diverged,
