@@ -72,7 +72,8 @@ struct Simulator::Impl {
     frame.indenter_nodes.assign(poses.size(), 0);
     for (int node : model->activeNodes()) {
       const NodeContact& c = model->node(node);
-      if (c.contact && c.owner >= 0 && static_cast<size_t>(c.owner) < poses.size()) ++frame.indenter_nodes[static_cast<size_t>(c.owner)];
+      if (c.contact && c.owner >= 0 && static_cast<size_t>(c.owner) < poses.size())
+        ++frame.indenter_nodes[static_cast<size_t>(c.owner)];
     }
     frame.indenter_poses.clear();
     for (const auto& T : poses) frame.indenter_poses.push_back(S_from_P * T);

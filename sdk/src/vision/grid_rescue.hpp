@@ -14,7 +14,8 @@
 //    stick-slip edge the first misses by the jump, in a lattice sheared
 //    within a cell the second, and at the onset of a slip the third, but a
 //    detector's error of more than near_swap_squares is off all three where
-//    the field is smooth; confidence 0.5; or
+//    the field is smooth (an error that happens to lie on the marker's own
+//    track is not: that is the price of the third model); confidence 0.5; or
 //  - every midpoint and parallelogram completion by those neighbours (at
 //    least three, one a midpoint) puts it within rescue_fraction x spacing
 //    (closeCompletion, grid_prediction.hpp); confidence 0.5 x (1 - that

@@ -191,7 +191,8 @@ int main(int argc, char** argv) {
       o.tracker.pose.self.prior_noise_mm = std::max(args.trace_noise_mm, 1e-5);
     }
     double ms = 0;
-    const auto frames = args.trace_images ? replayRendered(rs.scenario).frames : runField(record(rs.scenario, o), o.tracker, ms);
+    const auto frames =
+        args.trace_images ? replayRendered(rs.scenario).frames : runField(record(rs.scenario, o), o.tracker, ms);
     writeTrace(frames, args.trace_out);
     const RunScore s = scoreRun(frames);
     std::printf("%s: diverged %d (longest %d from frame %d)\n", rs.scenario.name.c_str(), s.diverged,
