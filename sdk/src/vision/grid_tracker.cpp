@@ -96,6 +96,7 @@ GridResult GridTracker::initialize(const std::vector<Corner>& corners, const Vie
   if (initialized_) {
     rest_ = current_ = r.markers;
     previous_ = ViewMarkers(pattern_);
+    carried_.assign(static_cast<size_t>(pattern_.count()), 0);
   }
   return r;
 }
@@ -313,7 +314,8 @@ GridResult GridTracker::finish(const Prediction& pred, ViewMarkers m) {
       continue;
     }
     std::optional<cv::Point2f> q;
-    if (current_.valid[static_cast<size_t>(id)]) q = predictFromNeighbourMotion(pattern_, current_.point, current_.valid, m, id, true);
+    if (current_.valid[static_cast<size_t>(id)] || carried_[static_cast<size_t>(id)])
+      q = predictFromNeighbourMotion(pattern_, current_.point, current_.valid, m, id, true);
     if (!q) q = spatial;
     float agreement = 0.5f;
     if (q) {
@@ -342,11 +344,20 @@ GridResult GridTracker::finish(const Prediction& pred, ViewMarkers m) {
   r.rejected = static_cast<int>(reject.size());
   m.confidence = std::move(confidence);
 
-  // State update: the measured markers; the lost ones completed from this
-  // frame's measured neighbours where possible, else their prediction.
+  // State update: the measured markers; those lost this frame carried by
+  // their measured neighbours' motion (header), the other lost ones
+  // completed from this frame's measured neighbours where possible, else
+  // their prediction.
   previous_ = current_;
   std::vector<cv::Point2f> estimate = m.point;
   std::vector<std::uint8_t> have = m.valid;
+  std::vector<std::uint8_t> carried(n, 0);
+  for (int id = 0; id < pattern_.count(); ++id) {
+    const size_t i = static_cast<size_t>(id);
+    if (m.valid[i] || !previous_.valid[i]) continue;
+    if (const auto q = predictFromNeighbourMotion(pattern_, previous_.point, previous_.valid, m, id, true))
+      estimate[i] = *q, have[i] = 1, carried[i] = 1;
+  }
   fillHoles(pattern_, estimate, have);
   for (int id = 0; id < pattern_.count(); ++id) {
     const size_t i = static_cast<size_t>(id);
@@ -354,6 +365,7 @@ GridResult GridTracker::finish(const Prediction& pred, ViewMarkers m) {
     current_.valid[i] = m.valid[i];
     current_.point[i] = have[i] ? estimate[i] : pred.point[i];
   }
+  carried_ = std::move(carried);
   r.markers = std::move(m);
   r.found = r.markers.count();
   r.lost = pattern_.count() - r.found;

@@ -38,11 +38,12 @@
 // predict better keeps it; a marker is dropped for the frame (never reported
 // at a neighbour's position) when it lies more than outlier_fraction x
 // spacing from where its neighbours put it (their motion since the last
-// frame, grid_growth.hpp, when it was measured then, else their spatial
-// completion, grid_prediction.hpp), or more than spatial_outlier_fraction x
-// spacing from their spatial completion (looser: a deep press distorts the
-// lattice by up to half a square, but a run of markers shifted together
-// along a line by a whole square keeps its motion, not its place), when most
+// frame, grid_growth.hpp, when it was measured then or the frame before,
+// else their spatial completion, grid_prediction.hpp), or more than
+// spatial_outlier_fraction x spacing from their spatial completion (looser:
+// a deep press distorts the lattice by up to half a square, but a run of
+// markers shifted together along a line by a whole square keeps its motion,
+// not its place), when most
 // of its links to its four neighbours flip direction or change length by
 // more than max_link_stretch since the last frame, or when two consecutive
 // links (right, down, left, up in lattice order) turn the wrong way round
@@ -60,6 +61,14 @@
 //   (1 - residual / (outlier_fraction x spacing)) x (good links / links),
 // residual being that distance; 0.5 x the link factor when no neighbour can
 // place it.
+// A marker lost for one frame keeps its place among its neighbours: its last
+// measured position is carried by their motion through that frame
+// (predictFromNeighbourMotion) and the next frame searches and checks it
+// from there. Under a deep press a correct marker lies up to half a square
+// off its neighbours' spatial completion (the lattice's curvature), so that
+// completion alone would put it beyond the near-swap bound once its motion
+// is lost; only one frame, as each carried frame adds the error of the
+// field's motion model (over longer gaps the spatial completion is nearer).
 // Units: view pixels.
 #pragma once
 
@@ -155,6 +164,7 @@ class GridTracker {
   ViewMarkers rest_;
   ViewMarkers current_;   // last known position of every id (valid: seen in the last frame)
   ViewMarkers previous_;  // the frame before, for the velocity
+  std::vector<std::uint8_t> carried_;  // per id: lost in the last frame, current_ its place carried by its neighbours' motion
 };
 
 // One-shot: detect + assign ids on a single image of a board (e.g. a
