@@ -235,7 +235,10 @@ bool AdaptivePoseEstimator::stickingAgain(const contact::ContactField& field, co
   for (int id : members) measured += old.markers.valid[static_cast<size_t>(id)] && now.valid[static_cast<size_t>(id)];
   const double needed = std::max<double>(options_.min_thin_stick_markers, options_.restick_fraction * measured);
   sticking = members;
-  const RigidFit fit = fitConsensus(sticking, old.markers, now, t_.robust_mm, t_.slip_mm,
+  // A sticking marker stays within the slip threshold of where the finger
+  // carries its anchor in every frame (stick_slip_classifier.hpp), so over
+  // the window it may depart from a rigid motion by twice that.
+  const RigidFit fit = fitConsensus(sticking, old.markers, now, t_.robust_mm, 2.0 * t_.slip_mm,
                                     static_cast<size_t>(std::ceil(needed)));
   if (!fit.ok || static_cast<double>(sticking.size()) < needed) return false;
   std::vector<Eigen::Vector3d> kept;  // all valid in `now` (fitConsensus keeps only those)

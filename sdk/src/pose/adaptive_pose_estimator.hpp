@@ -127,7 +127,11 @@ class AdaptivePoseEstimator {
   void enterMacroSlip(const MarkerField& now, const Eigen::Isometry3d& increment);
   // Sticking markers carry the finger again: over the last window (frame k-w
   // to k) the markers that moved as one rigid body W (fitConsensus,
-  // anchored_fit.hpp), at least restick_fraction of the contact's measured
+  // anchored_fit.hpp, trimmed at twice the slip threshold: a marker that
+  // sticks in both frames is within one of the finger's motion in each; the
+  // marker layer under the skin does not follow a turning finger rigidly, and
+  // at one threshold a tilt reversal that sticks again kept the footprint
+  // model for 20-30 frames), at least restick_fraction of the contact's measured
   // markers and min_thin_stick_markers, spanning an area that fixes a general
   // rotation, carry the footprint:
   // min over s in [0, 1] of |c_k - W c_{k-w} - s rho| < exit lag +

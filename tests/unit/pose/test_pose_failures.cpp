@@ -42,6 +42,20 @@ int framesIn(const std::vector<ReplayFrame>& frames, ContactState s) {
   return static_cast<int>(std::count_if(frames.begin(), frames.end(), [&](const ReplayFrame& f) { return f.state == s; }));
 }
 
+// Every frame from..to (indices) uses a stick model, the truth pitches by less than `true_turn_below`
+// (a turn down, deg) over them, and the estimate's pitch change is within `tolerance_deg` of the truth's.
+void expectStickModelsFollowThePitch(const std::vector<ReplayFrame>& frames, size_t from, size_t to,
+                                     double true_turn_below, double tolerance_deg) {
+  ASSERT_GT(frames.size(), to);
+  int stick_models = 0;
+  for (size_t k = from; k <= to; ++k) stick_models += frames[k].model != pose::PoseModel::centroid ? 1 : 0;
+  EXPECT_EQ(stick_models, static_cast<int>(to - from + 1));
+  const double true_turn = frames[to].gt.pitch - frames[from].gt.pitch;
+  const double estimated_turn = frames[to].raw.pitch - frames[from].raw.pitch;
+  ASSERT_LT(true_turn, true_turn_below);
+  EXPECT_NEAR(estimated_turn, true_turn, tolerance_deg);
+}
+
 // The campaign's random run `seed` at field level, with its noise (0.0003 mm per grey level), frame for frame.
 std::vector<ReplayFrame> campaignRun(unsigned seed) {
   const sim::RandomScenario rs = sim::randomScenario(seed);
@@ -267,14 +281,18 @@ TEST(FailurePoints, ATiltingPlateSticksAgainAfterATwist) {
   // follows the footprint with the pitch frozen (2.9 deg off by frame 388).
   // Not expectSaneOutput: at frames 198-200, in an earlier contact, the estimate steps 0.8-1.1 mm a frame
   // along x while the plate stands (entering macroscopic slip; docs/pose "Known limits").
-  const auto frames = campaignRun(9);
-  constexpr size_t kFrom = 347, kTo = 388;  // 0.25 s after the plate sticks again, to before lift-off
-  ASSERT_GT(frames.size(), kTo);
-  int stick_models = 0;
-  for (size_t k = kFrom; k <= kTo; ++k) stick_models += frames[k].model != pose::PoseModel::centroid ? 1 : 0;
-  EXPECT_EQ(stick_models, static_cast<int>(kTo - kFrom + 1));
-  const double true_turn = frames[kTo].gt.pitch - frames[kFrom].gt.pitch;
-  const double estimated_turn = frames[kTo].raw.pitch - frames[kFrom].raw.pitch;
-  ASSERT_LT(true_turn, -2.0);
-  EXPECT_NEAR(estimated_turn, true_turn, 0.1);
+  // Frames 347-388: 0.25 s after the plate sticks again, to before lift-off.
+  expectStickModelsFollowThePitch(campaignRun(9), 347, 388, -2.0, 0.1);
+}
+
+TEST(FailurePoints, AFingerThatSticksAgainAsItTiltsBackLeavesTheFootprintModel) {
+  // The campaign's random run 207 (halfspace, a finger on a 19x19 pattern at 16 fps): the finger pitches
+  // and rolls to 24 and -17 deg in partial slip until 3 of its markers stick, then tilts back (frame 134)
+  // and its markers stick again. Over a window the marker layer under the skin does not follow the turn
+  // rigidly: trimmed at one slip threshold, too few markers fit one rigid motion to end the footprint
+  // model, which froze pitch and roll over frames 137-157 (the run diverged). A marker that sticks in
+  // both frames of the window departs from the finger's motion by up to twice that.
+  const auto frames = campaignRun(207);
+  expectStickModelsFollowThePitch(frames, 142, 174, -20.0, 1.0);
+  EXPECT_FALSE(scoreRun(frames).diverged);
 }
