@@ -9,6 +9,7 @@
 #include "pose/anchored_fit.hpp"
 #include "pose/centroid_motion.hpp"
 #include "pose/contact_cap.hpp"
+#include "pose/touching_markers.hpp"
 
 namespace onetip::pose {
 
@@ -113,10 +114,23 @@ Eigen::Isometry3d AdaptivePoseEstimator::solveIncrement(const contact::ContactFi
     return fit.ok ? fit.motion : centroid_step;
   }
 
-  std::vector<int> stick_ids = classifier_.withLabel(MarkerLabel::stick);
+  // The stick fits take the labelled markers the finger can be touching
+  // (touching_markers.hpp) on a developed contact, when enough are left: on a
+  // smaller one every marker is at the edge.
+  const bool judge_touch = static_cast<int>(members.size()) >= options_.min_macro_markers;
+  const std::vector<std::uint8_t> touching =
+      judge_touch ? touchingMarkers(field, members, now.rows, now.cols, t_.noise_mm) : std::vector<std::uint8_t>{};
+  const auto stickSet = [&]() {
+    std::vector<int> ids = classifier_.withLabel(MarkerLabel::stick), touched;
+    if (!judge_touch) return ids;
+    for (int id : ids)
+      if (touching[static_cast<size_t>(id)]) touched.push_back(id);
+    return static_cast<int>(touched.size()) >= options_.min_thin_stick_markers ? touched : ids;
+  };
+  std::vector<int> stick_ids = stickSet();
   AnchoredFit af = fitAnchored(classifier_, field, stick_ids, now, pose_, t_, options_.rotation_significance);
   if (af.fit.ok && classifier_.classify(now, field.normal, af.fit.motion * pose_) > 0) {
-    stick_ids = classifier_.withLabel(MarkerLabel::stick);
+    stick_ids = stickSet();
     af = fitAnchored(classifier_, field, stick_ids, now, pose_, t_, options_.rotation_significance);
   }
   std::vector<StickCorrespondence> stick;

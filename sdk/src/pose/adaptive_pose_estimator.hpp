@@ -9,7 +9,11 @@
 //     whose references are their anchors a_i carried by the previous pose
 //     estimate T_{k-1} (so measurement noise does not accumulate frame to
 //     frame), trimmed and robust (pose/anchored_fit.hpp, which also says
-//     what a thin stick set can fix). The kept markers are the stick set.
+//     what a thin stick set can fix). On a developed contact (at least
+//     min_macro_markers region markers) only the labelled markers the finger
+//     can be touching enter the fits (pose/touching_markers.hpp: not where the
+//     pad relaxes convexly around the dimple), unless fewer than
+//     min_thin_stick_markers are left. The kept markers are the stick set.
 //  2. The increment dT_k = T_k T_{k-1}^-1 from the model pose/model_selection.hpp picks:
 //       full stick (no slipping marker)      -> Kabsch / Umeyama (rigid_fit.hpp, Eq. 1);
 //       partial slip (Eq. 16 holds)          -> Ceres stick/slip least squares (Eq. 13-15);

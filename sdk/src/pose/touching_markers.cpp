@@ -1,0 +1,29 @@
+#include "pose/touching_markers.hpp"
+
+#include <cmath>
+#include <utility>
+
+namespace onetip::pose {
+
+std::vector<std::uint8_t> touchingMarkers(const contact::ContactField& field, const std::vector<int>& members, int rows,
+                                          int cols, double sigma_mm) {
+  std::vector<std::uint8_t> touching(field.displacement.size(), 0);
+  const double bound = 3.0 * std::sqrt(20.0) * sigma_mm;
+  const auto normal = [&](size_t i) { return -field.displacement[i].z(); };
+  for (int id : members) {
+    const int r = id / cols, c = id % cols;
+    double laplacian = 0;
+    int measured = 0;
+    for (const auto& [dr, dc] : {std::pair{0, 1}, {0, -1}, {1, 0}, {-1, 0}}) {
+      const int rr = r + dr, cc = c + dc;
+      if (rr < 0 || cc < 0 || rr >= rows || cc >= cols) continue;
+      const size_t j = static_cast<size_t>(rr * cols + cc);
+      if (!field.valid[j]) continue;
+      laplacian += normal(j) - normal(static_cast<size_t>(id)), ++measured;
+    }
+    touching[static_cast<size_t>(id)] = measured < 4 || laplacian <= bound;
+  }
+  return touching;
+}
+
+}  // namespace onetip::pose

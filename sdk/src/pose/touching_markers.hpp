@@ -1,0 +1,34 @@
+// pose/touching_markers.hpp — the markers of a contact region that the
+// finger can be touching, from the shape of the normal deformation.
+//
+// A convex finger pressed into the pad leaves a dimple the skin conforms to:
+// over the markers it touches the normal deformation n = -u.z (mm) is a cap,
+// concave (its Laplacian negative, about -2/R for a finger of radius R; zero
+// under a flat plate). Around the contact the pad relaxes back to rest and
+// n is convex (a half-space's 1/r tail, a Pasternak foundation's dip, whose
+// 40 % region holds about three times the markers that touch). Per marker i
+// of the lattice with its four neighbours j measured,
+//   L_i = sum_j (n_j - n_i)      (mm; the discrete Laplacian times pitch^2),
+// and with independent noise sigma on each n, L_i of a flat field has
+// standard deviation sqrt(20) sigma. A marker is clearly outside the touch
+// when L_i > 3 sqrt(20) sigma; every other marker is kept, and so is one
+// with a neighbour missing (nothing to judge it by). A marker of the skin
+// just beside the contact's edge, with a neighbour under the cap, sees the
+// deformation bend down into the dimple and is kept too.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "contact/contact_field.hpp"
+
+namespace onetip::pose {
+
+// Per marker id (size of field.displacement): 1 for the `members` not
+// clearly outside the touch, 0 for the others and for non-members.
+// `rows` x `cols`: the marker lattice (id = row * cols + col); sigma_mm: the
+// markers' noise per axis.
+std::vector<std::uint8_t> touchingMarkers(const contact::ContactField& field, const std::vector<int>& members, int rows,
+                                          int cols, double sigma_mm);
+
+}  // namespace onetip::pose

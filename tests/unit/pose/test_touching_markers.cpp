@@ -1,0 +1,117 @@
+// Which region markers the finger can be touching (pose/touching_markers.hpp),
+// on synthetic normal-deformation fields over a 15 x 15 lattice at 1.2 mm:
+// a spherical cap (radius 8 mm) 0.3 mm deep at the bottom of a 2 mm dip that
+// relaxes convexly to rest around it (a soft foundation: the contact stage's
+// 40 % region then holds about as many markers around the touch as under
+// it), a flat plate, noise, and missing neighbours. Ground truth: which
+// nodes lie under the cap.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <random>
+
+#include "pose/touching_markers.hpp"
+
+using namespace onetip;
+
+namespace {
+
+constexpr int kN = 15;
+constexpr double kPitch = 1.2, kRadius = 8.0, kDepth = 0.3, kDip = 2.0;
+
+struct Field {
+  contact::ContactField field;
+  std::vector<int> members;  // the contact stage's region: n at least 40 % of its peak
+  std::vector<bool> under;   // the node lies under the cap
+};
+
+// n(r): the cap D + d - r^2 / 2R inside its edge a = sqrt(2 R d), outside
+// D a / r, convex (its Laplacian D a / r^3 > 0): pressure-free skin relaxing
+// to rest.
+Field sphereField(double noise_mm, unsigned seed) {
+  Field f;
+  const int n = kN * kN;
+  f.field.displacement.assign(n, Eigen::Vector3d::Zero());
+  f.field.valid.assign(n, 1);
+  f.under.assign(n, false);
+  const double a = std::sqrt(2 * kRadius * kDepth), edge = kDip;  // n at the cap's edge
+  std::mt19937 rng(seed);
+  std::normal_distribution<double> noise(0, noise_mm);
+  for (int id = 0; id < n; ++id) {
+    const double x = (id % kN - kN / 2) * kPitch, y = (id / kN - kN / 2) * kPitch, r = std::hypot(x, y);
+    const bool inside = r < a;
+    const double nd = inside ? edge + (a * a - r * r) / (2 * kRadius) : edge * a / r;
+    f.field.displacement[static_cast<size_t>(id)].z() = -(nd + noise(rng));
+    f.under[static_cast<size_t>(id)] = inside;
+    if (nd >= 0.4 * (kDip + kDepth)) f.members.push_back(id);
+  }
+  return f;
+}
+
+TEST(TouchingMarkers, UnderASphereTheCapIsKeptAndTheRelaxingSkinAroundItIsNot) {
+  // A marker of the skin beside the cap's edge has a neighbour under the cap,
+  // and the deformation bends down into the dimple across it (the edge's
+  // kink): the test cannot tell it from the cap. Every marker under the cap
+  // is kept, every marker further out is not.
+  const Field f = sphereField(0.0, 1);
+  const auto touching = pose::touchingMarkers(f.field, f.members, kN, kN, 0.0006);
+  const auto besideCap = [&](int id) {
+    const int r = id / kN, c = id % kN;
+    for (const auto& [dr, dc] : {std::pair{0, 1}, {0, -1}, {1, 0}, {-1, 0}})
+      if (f.under[static_cast<size_t>((r + dr) * kN + c + dc)]) return true;
+    return false;
+  };
+  int under = 0, kept_under = 0, beyond = 0, kept_beyond = 0;
+  for (int id : f.members) {
+    if (f.under[static_cast<size_t>(id)]) ++under, kept_under += touching[static_cast<size_t>(id)];
+    else if (!besideCap(id)) ++beyond, kept_beyond += touching[static_cast<size_t>(id)];
+  }
+  std::printf("under the cap %d (kept %d), beyond the markers beside it %d (kept %d)\n", under, kept_under, beyond,
+              kept_beyond);
+  ASSERT_GE(under, 9);
+  ASSERT_GE(beyond, 4);
+  EXPECT_EQ(kept_under, under);
+  EXPECT_EQ(kept_beyond, 0);
+}
+
+TEST(TouchingMarkers, NoiseOfAFlatFieldIsNotReadAsCurvature) {
+  // A flat plate pressed 1 mm: the Laplacian is noise alone; at 3 sigma of
+  // its spread almost every marker is kept.
+  Field f = sphereField(0.0, 2);
+  std::mt19937 rng(3);
+  const double sigma = 0.002;
+  std::normal_distribution<double> noise(0, sigma);
+  std::vector<int> all;
+  for (int id = 0; id < kN * kN; ++id) {
+    f.field.displacement[static_cast<size_t>(id)].z() = -(1.0 + noise(rng));
+    all.push_back(id);
+  }
+  const auto touching = pose::touchingMarkers(f.field, all, kN, kN, sigma);
+  int kept = 0;
+  for (int id : all) kept += touching[static_cast<size_t>(id)];
+  EXPECT_GE(kept, kN * kN - 3);
+  // Judged at a tenth of the real noise, the same field loses many markers:
+  // the bound is what makes the test hold.
+  const auto strict = pose::touchingMarkers(f.field, all, kN, kN, 0.1 * sigma);
+  int kept_strict = 0;
+  for (int id : all) kept_strict += strict[static_cast<size_t>(id)];
+  EXPECT_LT(kept_strict, kN * kN - 30);
+}
+
+TEST(TouchingMarkers, AMarkerWithANeighbourMissingIsKeptAndNonMembersAreNot) {
+  Field f = sphereField(0.0, 4);
+  // A marker of the relaxing skin, judged out with all its neighbours.
+  int skin = -1;
+  const auto before = pose::touchingMarkers(f.field, f.members, kN, kN, 0.0006);
+  for (int id : f.members)
+    if (!f.under[static_cast<size_t>(id)] && !before[static_cast<size_t>(id)] && id % kN > 0) skin = id;
+  ASSERT_GE(skin, 0);
+  f.field.valid[static_cast<size_t>(skin - 1)] = 0;
+  const auto after = pose::touchingMarkers(f.field, f.members, kN, kN, 0.0006);
+  EXPECT_TRUE(after[static_cast<size_t>(skin)]);
+  const auto none = pose::touchingMarkers(f.field, {}, kN, kN, 0.0006);
+  for (auto t : none) EXPECT_FALSE(t);
+}
+
+}  // namespace
