@@ -8,6 +8,10 @@ namespace onetip::pose {
 std::vector<std::uint8_t> touchingMarkers(const contact::ContactField& field, const std::vector<int>& members, int rows,
                                           int cols, double sigma_mm) {
   std::vector<std::uint8_t> touching(field.displacement.size(), 0);
+  if (rows <= 0 || cols <= 0 || static_cast<size_t>(rows) * static_cast<size_t>(cols) != touching.size()) {
+    for (int id : members) touching[static_cast<size_t>(id)] = 1;  // no lattice to judge by
+    return touching;
+  }
   const double bound = 3.0 * std::sqrt(20.0) * sigma_mm;
   const auto normal = [&](size_t i) { return -field.displacement[i].z(); };
   for (int id : members) {

@@ -26,8 +26,9 @@ namespace onetip::pose {
 
 // Per marker id (size of field.displacement): 1 for the `members` not
 // clearly outside the touch, 0 for the others and for non-members.
-// `rows` x `cols`: the marker lattice (id = row * cols + col); sigma_mm: the
-// markers' noise per axis.
+// `rows` x `cols`: the marker lattice (id = row * cols + col; when it does not
+// match the field's size every member is kept); sigma_mm: the markers' noise
+// per axis.
 std::vector<std::uint8_t> touchingMarkers(const contact::ContactField& field, const std::vector<int>& members, int rows,
                                           int cols, double sigma_mm);
 

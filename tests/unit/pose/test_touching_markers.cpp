@@ -99,7 +99,7 @@ TEST(TouchingMarkers, NoiseOfAFlatFieldIsNotReadAsCurvature) {
   EXPECT_LT(kept_strict, kN * kN - 30);
 }
 
-TEST(TouchingMarkers, AMarkerWithANeighbourMissingIsKeptAndNonMembersAreNot) {
+TEST(TouchingMarkers, AMarkerWithANeighbourMissingIsKeptNonMembersAreNotAndNoLatticeKeepsAll) {
   Field f = sphereField(0.0, 4);
   // A marker of the relaxing skin, judged out with all its neighbours.
   int skin = -1;
@@ -112,6 +112,9 @@ TEST(TouchingMarkers, AMarkerWithANeighbourMissingIsKeptAndNonMembersAreNot) {
   EXPECT_TRUE(after[static_cast<size_t>(skin)]);
   const auto none = pose::touchingMarkers(f.field, {}, kN, kN, 0.0006);
   for (auto t : none) EXPECT_FALSE(t);
+  // No lattice to judge by (a field without its rows and columns): every member kept.
+  const auto unjudged = pose::touchingMarkers(f.field, f.members, 0, 0, 0.0006);
+  for (int id : f.members) EXPECT_TRUE(unjudged[static_cast<size_t>(id)]);
 }
 
 }  // namespace
