@@ -47,12 +47,14 @@
 //     means the finger slides while the markers stay behind (in partial slip
 //     the footprint leads the finger by ~20% of the travel in the simulator,
 //     at gross slip the stalled estimate loses all of it), in
-//     macro_confirm consecutive frames (a footprint jittering because
+//     consecutive frames over macro_confirm_s (a footprint jittering because
 //     markers are lost is not a slide). T_k then catches
 //     up by the drift once and the centroid model takes over. No decision is
 //     taken while the region size changes by macro_size_change or the finger
 //     tilts by macro_tilt_gate_deg within the window (rolling and pitching
-//     move the footprint over the finger legitimately).
+//     move the footprint over the finger legitimately), and no drift is
+//     reported while the normal deformation under the footprint deepens by
+//     macro_size_change (a deepening press moves its centre).
 //  4. Safety: one frame's increment is limited to max_speed_mm_s of motion of
 //     the contact point and max_rate_deg_s of rotation times the frame
 //     interval (scaled down, direction kept).
@@ -61,13 +63,13 @@
 #include <Eigen/Geometry>
 #include <deque>
 #include <optional>
-#include <utility>
 
 #include "contact/contact_field.hpp"
 #include "contact/stick_slip_classifier.hpp"
 #include "core/marker_field.hpp"
 #include "onetip/types.hpp"
 #include "pose/adaptive_pose_options.hpp"
+#include "pose/contact_snapshot.hpp"
 #include "pose/model_selection.hpp"
 
 namespace onetip::pose {
@@ -103,15 +105,6 @@ class AdaptivePoseEstimator {
   const AdaptivePoseOptions& options() const { return options_; }
 
  private:
-  struct Frame {
-    MarkerField markers;
-    std::vector<Eigen::Vector3d> displacement;  // from the contact field
-    double cut_mm;
-    std::vector<int> members;                   // of the tracked region
-    Eigen::Vector3d footprint;
-    Eigen::Isometry3d pose;
-    double region_size;
-  };
   // The region holding most of the contact's labelled markers, or -1 when
   // none holds any: the finger tracked has lifted (another keeps the pad in
   // contact) and its contact has ended.
@@ -158,9 +151,6 @@ class AdaptivePoseEstimator {
   // as stick). nullopt (labels untouched) when it does not hold.
   std::optional<Eigen::Isometry3d> restick(const contact::ContactField& field, const std::vector<int>& members,
                                            const MarkerField& now);
-  std::pair<Eigen::Vector3d, Eigen::Vector3d> commonFootprints(const Frame& before, const contact::ContactField& field,
-                                                              const std::vector<int>& members,
-                                                              const MarkerField& now) const;
   // The valid members' smaller principal x-y extent reaches the min spread (they fix a general rotation).
   bool spansArea(const std::vector<int>& members, const MarkerField& now) const;
   Eigen::Isometry3d centroidStep(const contact::ContactField& field, const std::vector<int>& members,
@@ -177,7 +167,7 @@ class AdaptivePoseEstimator {
   int macro_suspect_frames_ = 0;             // consecutive frames with a footprint drift
   Eigen::Isometry3d pose_ = Eigen::Isometry3d::Identity();
   Eigen::Vector3d c0_{0, 0, 0};
-  std::deque<Frame> history_;                // newest last; history_.back() is frame k-1
+  std::deque<ContactSnapshot> history_;                // newest last; history_.back() is frame k-1
 };
 
 }  // namespace onetip::pose

@@ -34,7 +34,7 @@ void AdaptivePoseOptions::validate() const {
   requireIn(macro_drift_ratio, 0.05, 0.95, "macro_drift_ratio", "");
   requireIn(macro_tilt_gate_deg, 0.01, 90, "macro_tilt_gate_deg", "deg");
   requireIn(macro_size_change, 0.01, 10, "macro_size_change", "");
-  requireIn(macro_confirm, 1, 100, "macro_confirm", "");
+  requireIn(macro_confirm_s, 0.001, 1, "macro_confirm_s", "s");
   requireIn(macro_exit_lag_pitches, 0.001, 2, "macro_exit_lag_pitches", "");
   requireIn(max_speed_mm_s, 1, 10000, "max_speed_mm_s", "mm/s");
   requireIn(max_rate_deg_s, 1, 100000, "max_rate_deg_s", "deg/s");
@@ -57,6 +57,7 @@ EstimatorThresholds deriveThresholds(const AdaptivePoseOptions& o, const SensorS
   const double dt = self.frame_s;
   t.stick_hold_frames = std::max(o.stick_hold_min_frames, static_cast<int>(std::ceil(o.stick_hold_s / dt - 1e-9)));
   t.window_frames = std::max(2, static_cast<int>(std::lround(o.macro_window_s / dt)));
+  t.confirm_frames = std::max(2, static_cast<int>(std::lround(o.macro_confirm_s / dt)));
   t.max_step_mm = o.max_speed_mm_s * dt;
   t.max_step_rad = o.max_rate_deg_s * dt * kRadPerDeg;
   return t;

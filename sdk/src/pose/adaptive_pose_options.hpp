@@ -15,13 +15,14 @@
 //                      a marker sticks again: both a time and a count of quiet measurements; at 15 fps
 //                      5 frames of evidence let the twist's slipping ring stick again too early)
 //   window           = max(2, round(macro_window_s / dt)) frames (footprint tests)
+//   confirm          = max(2, round(macro_confirm_s / dt)) frames (a footprint drift seen this long)
 //   drift floor      = macro_drift_pitches * p          (footprint drift that can mean a slide, mm)
 //   exit lag         = macro_exit_lag_pitches * p       (footprint lag that ends macroscopic slip, mm)
 //   max step         = max_speed_mm_s * dt mm and max_rate_deg_s * dt deg per frame
 // The defaults give the thresholds the estimator was tuned with at the front
 // end's 0.0006 mm, 1.2 mm pitch and 30 fps (slip 0.01 mm, robust 0.005 mm,
-// spread 0.6 mm, hold 10 frames, window 5 frames, drift 0.08 mm, exit lag
-// 0.06 mm, 1.5 mm / 6 deg per frame), so the single-axis figures stay where
+// spread 0.6 mm, hold 10 frames, window 5 frames, confirm 2 frames, drift
+// 0.08 mm, exit lag 0.06 mm, 1.5 mm / 6 deg per frame), so the single-axis figures stay where
 // they were; at other noise levels, densities and frame rates they scale.
 #pragma once
 
@@ -63,8 +64,12 @@ struct AdaptivePoseOptions {
   double macro_drift_ratio = 0.35;            // [0.05, 0.95] of the footprint's own travel (and of the rolling
                                               // shift, in the way back's footprint test)
   double macro_tilt_gate_deg = 1.5;           // [0.01, 90] no decision while the finger tilts this much in the window
-  double macro_size_change = 0.3;             // [0.01, 10] no decision while the region size changes this fraction
-  int macro_confirm = 2;                      // [1, 100] consecutive frames the drift must be seen
+  // [0.01, 10] no decision while the region size changes this fraction in the window, nor while the normal
+  // deformation under the footprint deepens by it (a plate over the whole pattern, seed 35: the region cannot grow)
+  double macro_size_change = 0.3;
+  // [0.001, 1] s the drift must be seen in consecutive frames (at least two): a time, not a count; at
+  // 188 fps two frames (11 ms) of a footprint drifting as a press ended were taken for a slide (seed 140)
+  double macro_confirm_s = 0.067;
   double macro_exit_lag_pitches = 0.05;       // [0.001, 2]
   double max_speed_mm_s = 45;                 // [1, 10000] fastest finger motion followed in one frame
   double max_rate_deg_s = 180;                // [1, 100000]
@@ -73,7 +78,7 @@ struct AdaptivePoseOptions {
 
 struct EstimatorThresholds {
   double noise_mm = 0, slip_mm = 0, robust_mm = 0, min_spread_mm = 0, macro_drift_mm = 0, macro_exit_lag_mm = 0;
-  int stick_hold_frames = 1, window_frames = 2;
+  int stick_hold_frames = 1, window_frames = 2, confirm_frames = 2;
   double max_step_mm = 0, max_step_rad = 0;
 };
 

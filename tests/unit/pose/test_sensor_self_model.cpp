@@ -87,6 +87,7 @@ TEST(EstimatorThresholds, ScaleWithNoisePitchAndFrameInterval) {
   EXPECT_NEAR(t.min_spread_mm, 0.6, 1e-9);
   EXPECT_EQ(t.stick_hold_frames, 10);
   EXPECT_EQ(t.window_frames, 5);
+  EXPECT_EQ(t.confirm_frames, 2);
   EXPECT_NEAR(t.macro_drift_mm, 0.08, 1e-3);
   EXPECT_NEAR(t.max_step_mm, 1.5, 1e-9);
   SensorSelf other = base;
@@ -99,6 +100,7 @@ TEST(EstimatorThresholds, ScaleWithNoisePitchAndFrameInterval) {
   EXPECT_NEAR(u.macro_drift_mm, 2 * t.macro_drift_mm, 1e-12);
   EXPECT_EQ(u.stick_hold_frames, 80);  // the same 0.33 s
   EXPECT_EQ(u.window_frames, 38);      // the same 0.16 s
+  EXPECT_EQ(u.confirm_frames, 16);     // the same 0.067 s
   EXPECT_NEAR(u.max_step_mm, t.max_step_mm / 8, 1e-12);
   other.noise_mm = 0.0001;  // quieter than the prior at rest: the prior holds
   EXPECT_NEAR(deriveThresholds(o, other).slip_mm, t.slip_mm, 1e-12);
