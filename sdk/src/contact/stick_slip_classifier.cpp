@@ -102,6 +102,15 @@ void StickSlipClassifier::markAllSticking(const MarkerField& now, const Eigen::I
     }
 }
 
+void StickSlipClassifier::reattach(const std::vector<int>& ids, const MarkerField& now, const Eigen::Isometry3d& pose) {
+  const Eigen::Isometry3d inv = pose.inverse();
+  for (int id : ids)
+    if (label_[static_cast<size_t>(id)] != MarkerLabel::outside) {
+      label_[static_cast<size_t>(id)] = MarkerLabel::stick;
+      reanchor(id, now, inv);
+    }
+}
+
 void StickSlipClassifier::markSticking(const std::vector<int>& sticking, const MarkerField& now,
                                        const Eigen::Isometry3d& pose) {
   markAllSlipping(now, pose);

@@ -126,6 +126,10 @@ Eigen::Isometry3d AdaptivePoseEstimator::solveIncrement(const contact::ContactFi
       if (touching[static_cast<size_t>(id)]) touched.push_back(id);
     return static_cast<int>(touched.size()) >= options_.min_thin_stick_markers ? touched : ids;
   };
+  if (judge_touch)
+    classifier_.reattach(
+        detachedUnderTheFinger(members, touching, classifier_.labels(), now, options_.min_thin_stick_markers), now,
+        pose_);
   std::vector<int> stick_ids = stickSet();
   AnchoredFit af = fitAnchored(classifier_, field, stick_ids, now, pose_, t_, options_.rotation_significance);
   if (af.fit.ok && classifier_.classify(now, field.normal, af.fit.motion * pose_) > 0) {

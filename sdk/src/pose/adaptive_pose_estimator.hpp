@@ -13,7 +13,10 @@
 //     min_macro_markers region markers) only the labelled markers the finger
 //     can be touching enter the fits (pose/touching_markers.hpp: not where the
 //     pad relaxes convexly around the dimple), unless fewer than
-//     min_thin_stick_markers are left. The kept markers are the stick set.
+//     min_thin_stick_markers are left; and when none of those sticks while at
+//     least min_thin_stick_markers of them are labelled detached (pushed along
+//     the normal further than the estimate carries them), those stick again
+//     at T_{k-1} (detachedUnderTheFinger). The kept markers are the stick set.
 //  2. The increment dT_k = T_k T_{k-1}^-1 from the model pose/model_selection.hpp picks:
 //       full stick (no slipping marker)      -> Kabsch / Umeyama (rigid_fit.hpp, Eq. 1);
 //       partial slip (Eq. 16 holds)          -> Ceres stick/slip least squares (Eq. 13-15);

@@ -30,4 +30,22 @@ std::vector<std::uint8_t> touchingMarkers(const contact::ContactField& field, co
   return touching;
 }
 
+std::vector<int> detachedUnderTheFinger(const std::vector<int>& members, const std::vector<std::uint8_t>& touching,
+                                        const std::vector<contact::MarkerLabel>& labels, const MarkerField& now,
+                                        int min_count) {
+  std::vector<int> detached;
+  int measured = 0, touched = 0;
+  for (int id : members) {
+    const size_t i = static_cast<size_t>(id);
+    if (!now.valid[i]) continue;
+    ++measured;
+    if (!touching[i]) continue;
+    ++touched;
+    if (labels[i] == contact::MarkerLabel::stick) return {};
+    if (labels[i] == contact::MarkerLabel::detached) detached.push_back(id);
+  }
+  if (touched == measured || static_cast<int>(detached.size()) < min_count) return {};
+  return detached;
+}
+
 }  // namespace onetip::pose

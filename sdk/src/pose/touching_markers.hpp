@@ -21,6 +21,8 @@
 #include <vector>
 
 #include "contact/contact_field.hpp"
+#include "contact/stick_slip_classifier.hpp"
+#include "core/marker_field.hpp"
 
 namespace onetip::pose {
 
@@ -31,5 +33,20 @@ namespace onetip::pose {
 // per axis.
 std::vector<std::uint8_t> touchingMarkers(const contact::ContactField& field, const std::vector<int>& members, int rows,
                                           int cols, double sigma_mm);
+
+// A marker the finger touches moves with it or slides over it; it cannot
+// part from it along the normal while the finger presses it. When no member
+// the finger can be touching (`touching`, above) is labelled stick while at
+// least `min_count` of them are labelled detached (their drift from the
+// anchors was along the normal, contact/stick_slip_classifier.hpp), it is the
+// estimate that left them: in the foundation model a press's fits follow the
+// skin beside the touch, which lags the finger, and the touching markers,
+// pushed deeper than the estimate carries them, are detached. Returns those
+// detached touching members, to stick again at the current estimate; none
+// otherwise, and none while every measured member counts as touching (the
+// test did not find the dimple's edge, so it tells nothing).
+std::vector<int> detachedUnderTheFinger(const std::vector<int>& members, const std::vector<std::uint8_t>& touching,
+                                        const std::vector<contact::MarkerLabel>& labels, const MarkerField& now,
+                                        int min_count);
 
 }  // namespace onetip::pose

@@ -70,6 +70,29 @@ TEST(StickSlipClassifier, RigidMotionSticksSlidingMarkersSlipAndReturnAfterTheHo
   EXPECT_EQ(c.label(0), MarkerLabel::stick);
 }
 
+TEST(StickSlipClassifier, ReattachedMarkersStickAtTheGivenPoseAndTheOthersKeepTheirLabels) {
+  AnchoredGrid g;
+  // Markers 6 and 7 are pushed 0.1 mm deeper than the finger carries them: detached; marker 0 slides: slip.
+  const Eigen::Isometry3d T1 = motion(0.3, 2);
+  MarkerField f1 = moved(g.rest, T1);
+  f1.position[6] -= Eigen::Vector3d(0, 0, 0.1);
+  f1.position[7] -= Eigen::Vector3d(0, 0, 0.1);
+  f1.position[0] -= Eigen::Vector3d(0.1, 0, 0);
+  g.c.classify(f1, g.up, T1);
+  ASSERT_EQ(g.c.label(6), MarkerLabel::detached);
+  ASSERT_EQ(g.c.label(0), MarkerLabel::slip);
+  // The estimate was 0.1 mm short of the press: reattached under the deeper pose, 6 and 7 stick and sit on
+  // their anchors; 0 still slips and 1 still sticks.
+  Eigen::Isometry3d T2 = T1;
+  T2.translation().z() -= 0.1;
+  g.c.reattach({6, 7}, f1, T2);
+  EXPECT_EQ(g.c.label(6), MarkerLabel::stick);
+  EXPECT_EQ(g.c.label(7), MarkerLabel::stick);
+  EXPECT_EQ(g.c.label(0), MarkerLabel::slip);
+  EXPECT_EQ(g.c.label(1), MarkerLabel::stick);
+  EXPECT_LT((T2 * g.c.anchor(6) - f1.position[6]).norm(), 1e-12);
+}
+
 TEST(StickSlipClassifier, RetainForgetsMarkersLeavingTheRegion) {
   const MarkerField rest = synth::flatGrid(3, 3);
   StickSlipClassifier c;

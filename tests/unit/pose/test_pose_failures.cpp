@@ -349,3 +349,23 @@ TEST(FailurePoints, APressDeepeningUnderAPlateThatCoversThePadIsNotASlide) {
   }
   EXPECT_FALSE(scoreRun(frames).diverged);
 }
+
+TEST(FailurePoints, AFingerPressedIntoAFoundationKeepsTheMarkersItTouches) {
+  // The campaign's random run 297 (foundation model, a finger on a 21x21 pattern at 24 fps): at onset most
+  // of the region is skin beside the touch, the fits follow it, and the markers under the finger, pushed
+  // deeper than the estimate carries them, were all labelled detached (frame 16: 12 labelled stick, none
+  // of them touching). The finger then pitched 23 deg with only skin in the stick set: the pitch froze at
+  // 7.7 deg and the footprint model took over (dy 1.7 mm off by frame 54). When no marker the finger can
+  // be touching sticks and at least min_thin_stick_markers of them are detached, those stick again at the
+  // current estimate (pose/touching_markers.hpp): 39 of 40 labelled stick markers then truly stick.
+  const auto frames = campaignRun(297);
+  ASSERT_GT(frames.size(), 61u);
+  for (size_t k = 20; k <= 60; ++k) {
+    const ReplayFrame& f = frames[k];
+    ASSERT_TRUE(f.contact && f.gt_contact) << "frame " << k;
+    EXPECT_NE(f.model, pose::PoseModel::centroid) << "frame " << k;
+    EXPECT_LT(std::abs(f.raw.pitch - f.gt.pitch), 1.0) << "frame " << k;  // 0.5-0.7 deg measured
+  }
+  EXPECT_GT(frames[60].gt.pitch, 20.0);
+  EXPECT_FALSE(scoreRun(frames).diverged);
+}

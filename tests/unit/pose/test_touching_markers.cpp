@@ -118,3 +118,35 @@ TEST(TouchingMarkers, AMarkerWithANeighbourMissingIsKeptNonMembersAreNotAndNoLat
 }
 
 }  // namespace
+
+TEST(TouchingMarkers, DetachedMarkersUnderTheFingerStickAgainOnlyWhenNoneOfThemSticks) {
+  // Over the synthetic sphere field: the markers the test keeps as touching are labelled detached (the
+  // estimate lagged a press), the skin around them stick. They are returned, to stick again; not when one
+  // of them still sticks, not when fewer than the minimum are detached, not when the test kept every member
+  // (it found no edge), and a marker not measured now is never returned.
+  const Field f = sphereField(0.0, 1);
+  const auto touching = pose::touchingMarkers(f.field, f.members, kN, kN, 0.0006);
+  std::vector<contact::MarkerLabel> labels(touching.size(), contact::MarkerLabel::outside);
+  std::vector<int> under;
+  for (int id : f.members) {
+    const bool touched = touching[static_cast<size_t>(id)] != 0;
+    labels[static_cast<size_t>(id)] = touched ? contact::MarkerLabel::detached : contact::MarkerLabel::stick;
+    if (touched) under.push_back(id);
+  }
+  ASSERT_GE(under.size(), 9u);
+  MarkerField now(kN, kN);
+  for (int id : f.members) now.valid[static_cast<size_t>(id)] = 1;
+  EXPECT_EQ(pose::detachedUnderTheFinger(f.members, touching, labels, now, 4), under);
+
+  now.valid[static_cast<size_t>(under.front())] = 0;  // not measured this frame: left as it is
+  EXPECT_EQ(pose::detachedUnderTheFinger(f.members, touching, labels, now, 4),
+            std::vector<int>(under.begin() + 1, under.end()));
+  now.valid[static_cast<size_t>(under.front())] = 1;
+
+  EXPECT_TRUE(pose::detachedUnderTheFinger(f.members, touching, labels, now, static_cast<int>(under.size()) + 1).empty());
+  auto one_sticks = labels;
+  one_sticks[static_cast<size_t>(under.back())] = contact::MarkerLabel::stick;
+  EXPECT_TRUE(pose::detachedUnderTheFinger(f.members, touching, one_sticks, now, 4).empty());
+  const std::vector<std::uint8_t> all_touching(touching.size(), 1);
+  EXPECT_TRUE(pose::detachedUnderTheFinger(f.members, all_touching, labels, now, 4).empty());
+}
