@@ -170,7 +170,7 @@ class AdaptivePoseEstimator {
   int macro_suspect_frames_ = 0;             // consecutive frames with a footprint drift
   Eigen::Isometry3d pose_ = Eigen::Isometry3d::Identity();
   Eigen::Vector3d c0_{0, 0, 0};
-  std::deque<ContactSnapshot> history_;                // newest last; history_.back() is frame k-1
+  std::deque<ContactSnapshot> history_;      // newest last; history_.back() is frame k-1
 };
 
 }  // namespace onetip::pose
