@@ -115,7 +115,8 @@ Eigen::Isometry3d AdaptivePoseEstimator::solveIncrement(const contact::ContactFi
 
   // The stick fits take the labelled markers the finger can be touching
   // (touching_markers.hpp) on a developed contact, when enough are left: on a
-  // smaller one every marker is at the edge.
+  // smaller one every marker is at the edge. Touching markers detached while
+  // none of them sticks stick again first (detachedUnderTheFinger).
   const bool judge_touch = static_cast<int>(members.size()) >= options_.min_macro_markers;
   const std::vector<std::uint8_t> touching =
       judge_touch ? touchingMarkers(field, members, now.rows, now.cols, t_.noise_mm) : std::vector<std::uint8_t>{};

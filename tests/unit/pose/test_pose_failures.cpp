@@ -316,7 +316,8 @@ TEST(FailurePoints, AFootprintDriftMustLastATimeNotTwoFrames) {
   // press the footprint centre, a weighted mean over a few coarse markers, had drifted 0.22 mm off the
   // estimate; seen in two frames (11 ms) it was taken as macroscopic slip (frame 108), which froze the
   // roll the finger then began and read it as a slide (dx 1.3 mm off by frame 192). The drift must now
-  // be seen for macro_confirm_s (two frames at 30 fps, 13 here).
+  // be seen for macro_confirm_s (two frames at 30 fps, 13 here). (Measured: it fails with neither change;
+  // either the confirmation time or the press gate below alone keeps it, as the press was still deepening.)
   const auto frames = campaignRun(140);
   int judged = 0;
   for (size_t k = 100; k < 190 && k < frames.size(); ++k) {
@@ -337,7 +338,8 @@ TEST(FailurePoints, APressDeepeningUnderAPlateThatCoversThePadIsNotASlide) {
   // whole pattern, so the region-size gate cannot see the press; the footprint centre moved 0.45 mm as
   // the deformation deepened, which was confirmed as a slide (caught up, then the footprint model;
   // 0.33 mm off to the end of the contact). The footprint test makes no decision while the normal
-  // deformation under it deepens by macro_size_change.
+  // deformation under it deepens by macro_size_change. (Measured: it fails without that gate, and also
+  // with the gate but a two-frame confirmation.)
   const auto frames = campaignRun(35);
   ASSERT_GT(frames.size(), 1140u);
   for (size_t k = 1110; k < 1140; ++k) {
