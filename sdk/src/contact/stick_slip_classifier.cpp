@@ -26,6 +26,7 @@ void StickSlipClassifier::reset(int marker_count) {
   unseen_label_.assign(static_cast<size_t>(marker_count), MarkerLabel::outside);
   anchor_.assign(static_cast<size_t>(marker_count), Eigen::Vector3d::Zero());
   quiet_frames_.assign(static_cast<size_t>(marker_count), 0);
+  frames_in_contact_.assign(static_cast<size_t>(marker_count), 0);
 }
 
 void StickSlipClassifier::retain(const std::vector<int>& members, const MarkerField& now) {
@@ -56,6 +57,7 @@ void StickSlipClassifier::anchorNew(const std::vector<int>& members, const Marke
       continue;
     }
     label_[i] = MarkerLabel::stick;
+    frames_in_contact_[i] = 0;
     reanchor(id, now, inv);
   }
 }
@@ -66,6 +68,7 @@ int StickSlipClassifier::classify(const MarkerField& now, const std::vector<Eige
   int changed = 0;
   for (size_t i = 0; i < label_.size(); ++i) {
     if (label_[i] == MarkerLabel::outside) continue;
+    ++frames_in_contact_[i];
     const Eigen::Vector3d d = now.position[i] - pose * anchor_[i];
     const Eigen::Vector3d& n = normals[i];
     const double normal_part = std::abs(d.dot(n));

@@ -71,6 +71,9 @@ class StickSlipClassifier {
   const Eigen::Vector3d& anchor(int id) const { return anchor_[static_cast<size_t>(id)]; }
   const std::vector<MarkerLabel>& labels() const { return label_; }
   std::vector<int> withLabel(MarkerLabel l) const;
+  // Classifications since the marker joined the contact (anchorNew gave it a
+  // fresh anchor); a remembered marker (see retain) keeps its count.
+  int framesInContact(int id) const { return frames_in_contact_[static_cast<size_t>(id)]; }
 
  private:
   void reanchor(int id, const MarkerField& now, const Eigen::Isometry3d& pose_inverse);
@@ -80,6 +83,7 @@ class StickSlipClassifier {
   std::vector<MarkerLabel> unseen_label_;  // label when last measured, for a member not measured since
   std::vector<Eigen::Vector3d> anchor_;
   std::vector<int> quiet_frames_;
+  std::vector<int> frames_in_contact_;
 };
 
 }  // namespace onetip::contact

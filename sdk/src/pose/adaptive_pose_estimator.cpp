@@ -117,17 +117,17 @@ Eigen::Isometry3d AdaptivePoseEstimator::solveIncrement(const contact::ContactFi
   // (touching_markers.hpp) on a developed contact, when enough are left: on a
   // smaller one every marker is at the edge. Touching markers detached while
   // none of them sticks stick again first (detachedUnderTheFinger).
-  const bool judge_touch = static_cast<int>(members.size()) >= options_.min_macro_markers;
+  const bool region_developed = static_cast<int>(members.size()) >= options_.min_macro_markers;
   const std::vector<std::uint8_t> touching =
-      judge_touch ? touchingMarkers(field, members, now.rows, now.cols, t_.noise_mm) : std::vector<std::uint8_t>{};
+      region_developed ? touchingMarkers(field, members, now.rows, now.cols, t_.noise_mm) : std::vector<std::uint8_t>{};
   const auto stickSet = [&]() {
     std::vector<int> ids = classifier_.withLabel(MarkerLabel::stick), touched;
-    if (!judge_touch) return ids;
+    if (!region_developed) return ids;
     for (int id : ids)
       if (touching[static_cast<size_t>(id)]) touched.push_back(id);
     return static_cast<int>(touched.size()) >= options_.min_thin_stick_markers ? touched : ids;
   };
-  if (judge_touch)
+  if (region_developed)
     classifier_.reattach(
         detachedUnderTheFinger(members, touching, classifier_.labels(), now, options_.min_thin_stick_markers), now,
         pose_);
@@ -150,9 +150,13 @@ Eigen::Isometry3d AdaptivePoseEstimator::solveIncrement(const contact::ContactFi
   evidence.rotation_supported = af.rotation_supported;
   evidence.n_stick = static_cast<int>(stick.size());
   evidence.n_slip = static_cast<int>(slip.size());
-  evidence.slip_fixes_rotation = !af.rotation_supported && !slip.empty() &&
-                                 evidence.n_stick >= options_.min_thin_stick_markers &&
-                                 stickSlipRotationInformation(stick, slip) >= t_.min_spread_mm * t_.min_spread_mm;
+  const bool settled = std::all_of(stick_ids.begin(), stick_ids.end(), [&](int id) {
+    return classifier_.framesInContact(id) >= t_.stick_hold_frames;
+  });
+  evidence.slip_fixes_rotation =
+      !af.rotation_supported && !slip.empty() &&
+      thinStickSetTrusted(evidence.n_stick, !region_developed, settled, options_.min_thin_stick_markers) &&
+      stickSlipRotationInformation(stick, slip) >= t_.min_spread_mm * t_.min_spread_mm;
   step.model = selectModel(evidence, policy);
   if (step.model == PoseModel::kabsch) return af.fit.motion;
   if (step.model == PoseModel::stick_slip) {

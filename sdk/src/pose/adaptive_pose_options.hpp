@@ -54,6 +54,8 @@ struct AdaptivePoseOptions {
   // residuals fix the rest) only with this many markers: the last 2-3 stuck markers as gross slip
   // begins are often creeping, and trusting them as the stick half of Ceres hides the slide (3 delays
   // gross slip in the macro-slip test; 300-run campaign: 232 diverged at 4 against 241 without the rule).
+  // On a contact too small to declare macroscopic slip, fewer will do once each has been in the contact
+  // for the stick hold (thinStickSetTrusted, model_selection.hpp).
   int min_thin_stick_markers = 4;
   // [0.05, 1] of the contact's markers measured over the window that must move as one rigid body
   // (and carry the footprint) before a stick model takes over again from the footprint: at a

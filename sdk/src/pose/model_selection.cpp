@@ -23,4 +23,8 @@ PoseModel selectModel(const ModelEvidence& e, ModelPolicy policy) {
   return PoseModel::stick_slip;
 }
 
+bool thinStickSetTrusted(int n_stick, bool small_contact, bool settled, int min_thin_stick_markers) {
+  return n_stick >= min_thin_stick_markers || (small_contact && settled);
+}
+
 }  // namespace onetip::pose

@@ -35,4 +35,13 @@ struct ModelEvidence {
 
 PoseModel selectModel(const ModelEvidence& evidence, ModelPolicy policy);
 
+// Whether a thin stick set of n_stick markers may take Eq. 13-15 (the
+// slip_fixes_rotation case above). With at least min_thin_stick_markers, yes.
+// With fewer, only on a contact too small to declare macroscopic slip (where
+// no slide test is there to be misled) and when each of its markers has been
+// in the contact for the stick hold (`settled`): markers the contact has just
+// reached lie at its edge, where the pressure is least and the skin creeps
+// first (a slide's leading edge).
+bool thinStickSetTrusted(int n_stick, bool small_contact, bool settled, int min_thin_stick_markers);
+
 }  // namespace onetip::pose

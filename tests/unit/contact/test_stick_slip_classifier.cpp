@@ -107,6 +107,32 @@ TEST(StickSlipClassifier, RetainForgetsMarkersLeavingTheRegion) {
   EXPECT_EQ(c.withLabel(MarkerLabel::stick), (std::vector<int>{0, 3}));
 }
 
+// A marker counts the classifications since it joined the contact, whatever its
+// label; a marker that leaves the region and comes back starts again.
+TEST(StickSlipClassifier, CountsTheFramesEachMarkerHasBeenInTheContact) {
+  AnchoredGrid g;
+  StickSlipClassifier& c = g.c;
+  EXPECT_EQ(c.framesInContact(0), 0);
+  const Eigen::Isometry3d T = motion(0.3, 2);
+  MarkerField slid = moved(g.rest, T);
+  slid.position[0] -= Eigen::Vector3d(0.1, 0, 0);
+  c.classify(slid, g.up, T);
+  c.classify(slid, g.up, T);
+  EXPECT_EQ(c.label(0), MarkerLabel::slip);
+  EXPECT_EQ(c.framesInContact(0), 2);
+  EXPECT_EQ(c.framesInContact(7), 2);
+  std::vector<int> without7 = g.all;
+  without7.erase(without7.begin() + 7);
+  c.retain(without7, slid);  // measured outside the region: forgotten
+  c.classify(slid, g.up, T);
+  EXPECT_EQ(c.framesInContact(0), 3);
+  c.retain(g.all, slid);
+  c.anchorNew(g.all, slid, T);
+  EXPECT_EQ(c.framesInContact(7), 0);
+  c.classify(slid, g.up, T);
+  EXPECT_EQ(c.framesInContact(7), 1);
+}
+
 TEST(StickSlipClassifier, OptionsAreValidated) {
   contact::StickSlipOptions o;
   o.slip_threshold_mm = 0;

@@ -146,3 +146,13 @@ TEST(ModelSelection, FollowsEquation16AndTheStickSet) {
   e.stick_fit_ok = false;
   EXPECT_EQ(selectModel(e, ModelPolicy::adaptive), PoseModel::centroid);
 }
+
+TEST(ModelSelection, AThinStickSetBelowTheCountIsTrustedOnlyOnASmallContactOnceSettled) {
+  constexpr int kMinThin = 4;
+  for (bool small : {false, true})
+    for (bool settled : {false, true}) EXPECT_TRUE(thinStickSetTrusted(kMinThin, small, settled, kMinThin));
+  EXPECT_TRUE(thinStickSetTrusted(3, true, true, kMinThin));    // a small contact's settled core
+  EXPECT_FALSE(thinStickSetTrusted(3, true, false, kMinThin));  // markers just reached: the edge creeps
+  EXPECT_FALSE(thinStickSetTrusted(3, false, true, kMinThin));  // a developed contact's last stuck markers
+  EXPECT_FALSE(thinStickSetTrusted(2, false, false, kMinThin));
+}
