@@ -116,10 +116,16 @@ Eigen::Isometry3d AdaptivePoseEstimator::solveIncrement(const contact::ContactFi
   // The stick fits take the labelled markers the finger can be touching
   // (touching_markers.hpp) on a developed contact, when enough are left: on a
   // smaller one every marker is at the edge. Touching markers detached while
-  // none of them sticks stick again first (detachedUnderTheFinger).
+  // none of them sticks stick again first (detachedUnderTheFinger). The cap's
+  // concave core narrows the stick set to the markers that stick last; only
+  // while the stick test sees them creep before the footprint test's floor
+  // (slip threshold below the drift floor): noisier, a creeping core would
+  // hide a slide from both.
   const bool region_developed = static_cast<int>(members.size()) >= options_.min_macro_markers;
+  const double core_spread = t_.slip_mm < t_.macro_drift_mm ? options_.min_rotation_spread_pitches : 0.0;
   const std::vector<std::uint8_t> touching =
-      region_developed ? touchingMarkers(field, members, now.rows, now.cols, t_.noise_mm) : std::vector<std::uint8_t>{};
+      region_developed ? touchingMarkers(field, members, now.rows, now.cols, t_.noise_mm, core_spread)
+                       : std::vector<std::uint8_t>{};
   const auto stickSet = [&]() {
     std::vector<int> ids = classifier_.withLabel(MarkerLabel::stick), touched;
     if (!region_developed) return ids;

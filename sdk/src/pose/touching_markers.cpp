@@ -1,12 +1,27 @@
 #include "pose/touching_markers.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <utility>
+
+#include "pose/rigid_fit.hpp"
 
 namespace onetip::pose {
 
+namespace {
+
+// The core (ids) spans an area: the smaller principal RMS extent of its lattice coordinates.
+bool spansArea(const std::vector<int>& core, int cols, double min_pitches) {
+  std::vector<Eigen::Vector3d> lattice;
+  for (int id : core) lattice.emplace_back(id % cols, id / cols, 0.0);
+  return lattice.size() >= 3 && planarSpread(lattice).x() >= min_pitches;
+}
+
+}  // namespace
+
 std::vector<std::uint8_t> touchingMarkers(const contact::ContactField& field, const std::vector<int>& members, int rows,
-                                          int cols, double sigma_mm) {
+                                          int cols, double sigma_mm, double core_spread_pitches) {
   std::vector<std::uint8_t> touching(field.displacement.size(), 0);
   if (rows <= 0 || cols <= 0 || static_cast<size_t>(rows) * static_cast<size_t>(cols) != touching.size()) {
     for (int id : members) touching[static_cast<size_t>(id)] = 1;  // no lattice to judge by
@@ -14,6 +29,7 @@ std::vector<std::uint8_t> touchingMarkers(const contact::ContactField& field, co
   }
   const double bound = 3.0 * std::sqrt(20.0) * sigma_mm;
   const auto normal = [&](size_t i) { return -field.displacement[i].z(); };
+  std::vector<int> core;
   for (int id : members) {
     const int r = id / cols, c = id % cols;
     double laplacian = 0;
@@ -26,7 +42,13 @@ std::vector<std::uint8_t> touchingMarkers(const contact::ContactField& field, co
       laplacian += normal(j) - normal(static_cast<size_t>(id)), ++measured;
     }
     touching[static_cast<size_t>(id)] = measured < 4 || laplacian <= bound;
+    if (measured == 4 && laplacian < -2.0 * bound) core.push_back(id);
   }
+  if (core_spread_pitches <= 0 || !spansArea(core, cols, core_spread_pitches)) return touching;
+  double shallowest = std::numeric_limits<double>::infinity();
+  for (int id : core) shallowest = std::min(shallowest, normal(static_cast<size_t>(id)));
+  for (int id : members)
+    if (normal(static_cast<size_t>(id)) < shallowest) touching[static_cast<size_t>(id)] = 0;
   return touching;
 }
 

@@ -15,6 +15,23 @@
 // with a neighbour missing (nothing to judge it by). A marker of the skin
 // just beside the contact's edge, with a neighbour under the cap, sees the
 // deformation bend down into the dimple and is kept too.
+//
+// That test only drops what is clearly convex. Early in a press into a
+// foundation the skin beside the touch is only faintly convex (its Laplacian
+// n (h / l)^2 grows with the dent n; l the foundation's length), so every
+// member is kept, the fits follow that majority and the press is read short
+// (by a quarter in the campaign's median). The cap itself is clearly concave
+// from the first frames: L = -2 h^2 / R (-0.28 mm for the shipped finger at
+// 1.2 mm). So the markers with all four neighbours measured and
+//   L_i < -2 * 3 sqrt(20) sigma
+// (beyond the convex cut by a further 3 sigma of L, so that noise does not
+// move a marker in and out of the set from frame to frame) form the cap's
+// core. When that core spans an area (the smaller principal extent of its
+// lattice coordinates at least core_spread_pitches: not a line), the touch is
+// found directly: the core, plus the members not clearly convex whose normal
+// deformation is at least the core's shallowest (a flat stretch under the same
+// finger; a plate's interior inside its concave rim). The skin beside the
+// touch, shallower than the cap's edge, is left out.
 #pragma once
 
 #include <cstdint>
@@ -26,13 +43,14 @@
 
 namespace onetip::pose {
 
-// Per marker id (size of field.displacement): 1 for the `members` not
-// clearly outside the touch, 0 for the others and for non-members.
+// Per marker id (size of field.displacement): 1 for the `members` the finger
+// can be touching, 0 for the others and for non-members.
 // `rows` x `cols`: the marker lattice (id = row * cols + col; when it does not
 // match the field's size every member is kept); sigma_mm: the markers' noise
-// per axis.
+// per axis; core_spread_pitches: the extent a concave core needs (marker
+// pitches; 0: never use the core, only drop what is clearly convex).
 std::vector<std::uint8_t> touchingMarkers(const contact::ContactField& field, const std::vector<int>& members, int rows,
-                                          int cols, double sigma_mm);
+                                          int cols, double sigma_mm, double core_spread_pitches);
 
 // A marker the finger touches moves with it or slides over it; it cannot
 // part from it along the normal while the finger presses it. When no member

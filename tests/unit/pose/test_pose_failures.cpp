@@ -371,3 +371,33 @@ TEST(FailurePoints, AFingerPressedIntoAFoundationKeepsTheMarkersItTouches) {
   EXPECT_GT(frames[60].gt.pitch, 20.0);
   EXPECT_FALSE(scoreRun(frames).diverged);
 }
+
+TEST(FailurePoints, APressIntoAFoundationIsReadByTheMarkersUnderTheCap) {
+  // The campaign's random run 132 (foundation model, a sphere on a 25x25 pattern): the first press (frames
+  // 58-130, no turn) was read at 56 % of its depth. Its region grew to 90 markers, 28 of them touching; the
+  // skin beside the touch, only faintly convex, was kept as touching and carried the stick fits. The cap's
+  // concave core (pose/touching_markers.hpp) now picks the touch: 0.92-0.95 of the depth from frame 100.
+  const auto frames = campaignRun(132);
+  ASSERT_GT(frames.size(), 125u);
+  for (size_t k = 100; k <= 124; ++k) {
+    const ReplayFrame& f = frames[k];
+    ASSERT_TRUE(f.contact && f.gt_contact) << "frame " << k;
+    ASSERT_GT(f.gt.dz, 0.75) << "frame " << k;
+    EXPECT_LT(std::abs(f.raw.dz - f.gt.dz), 0.1) << "frame " << k;  // 0.07 measured; 0.35-0.55 before
+    EXPECT_LT(std::abs(f.raw.pitch - f.gt.pitch), 1.0) << "frame " << k;
+    EXPECT_LT(std::abs(f.raw.roll - f.gt.roll), 1.0) << "frame " << k;
+  }
+}
+
+TEST(FailurePoints, AtHighNoiseTheCapsCoreDoesNotHideASlide) {
+  // slide_x at 0.012 mm of noise per axis (15x the front end's): the slip threshold (0.2 mm) is above the
+  // footprint test's drift floor (0.08 mm), so the cap's concave core, the markers that stick last, creeps
+  // unseen by either test; used there it held the estimate back 2 mm in gross slip with a 20 deg roll. The
+  // core is only used while the slip threshold is below the drift floor. (The estimator is told the noise,
+  // as the noise table does: the scenario has too few frames at rest to measure it.)
+  ReplayOptions o;
+  o.noise_mm = 0.012;
+  o.tracker.pose.self.prior_noise_mm = o.noise_mm;
+  const auto frames = replay(sampleScenario("slide_x"), o);
+  EXPECT_FALSE(scoreRun(frames).diverged);
+}
