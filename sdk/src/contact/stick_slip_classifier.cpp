@@ -105,12 +105,12 @@ void StickSlipClassifier::markAllSticking(const MarkerField& now, const Eigen::I
     }
 }
 
-void StickSlipClassifier::reattach(const std::vector<int>& ids, const MarkerField& now, const Eigen::Isometry3d& pose) {
+void StickSlipClassifier::reattach(const std::vector<int>& ids, const MarkerField& at, const Eigen::Isometry3d& pose) {
   const Eigen::Isometry3d inv = pose.inverse();
   for (int id : ids)
     if (label_[static_cast<size_t>(id)] != MarkerLabel::outside) {
       label_[static_cast<size_t>(id)] = MarkerLabel::stick;
-      reanchor(id, now, inv);
+      reanchor(id, at, inv);
     }
 }
 

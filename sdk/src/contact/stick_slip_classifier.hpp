@@ -62,8 +62,9 @@ class StickSlipClassifier {
   void markAllSlipping(const MarkerField& now, const Eigen::Isometry3d& pose);
   // Every anchored marker sticks, re-anchored under `pose`.
   void markAllSticking(const MarkerField& now, const Eigen::Isometry3d& pose);
-  // The markers `ids` (anchored ones) stick, re-anchored under `pose`; every other label is kept.
-  void reattach(const std::vector<int>& ids, const MarkerField& now, const Eigen::Isometry3d& pose);
+  // The markers `ids` (anchored ones) stick, re-anchored at pose^-1 p with p their
+  // positions in `at` (measured there); every other label is kept.
+  void reattach(const std::vector<int>& ids, const MarkerField& at, const Eigen::Isometry3d& pose);
   // Every anchored marker is re-anchored under `pose`: those in `sticking` stick, the others slip.
   void markSticking(const std::vector<int>& sticking, const MarkerField& now, const Eigen::Isometry3d& pose);
 

@@ -133,10 +133,10 @@ Eigen::Isometry3d AdaptivePoseEstimator::solveIncrement(const contact::ContactFi
       if (touching[static_cast<size_t>(id)]) touched.push_back(id);
     return static_cast<int>(touched.size()) >= options_.min_thin_stick_markers ? touched : ids;
   };
-  if (region_developed)
-    classifier_.reattach(
-        detachedUnderTheFinger(members, touching, classifier_.labels(), now, options_.min_thin_stick_markers), now,
-        pose_);
+  if (region_developed)  // anchored where they were a frame ago: the fit keeps this frame's motion
+    classifier_.reattach(detachedUnderTheFinger(members, touching, classifier_.labels(), before, now,
+                                                options_.min_thin_stick_markers),
+                         before, pose_);
   std::vector<int> stick_ids = stickSet();
   AnchoredFit af = fitAnchored(classifier_, field, stick_ids, now, pose_, t_, options_.rotation_significance);
   if (af.fit.ok && classifier_.classify(now, field.normal, af.fit.motion * pose_) > 0) {

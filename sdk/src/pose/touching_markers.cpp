@@ -53,8 +53,8 @@ std::vector<std::uint8_t> touchingMarkers(const contact::ContactField& field, co
 }
 
 std::vector<int> detachedUnderTheFinger(const std::vector<int>& members, const std::vector<std::uint8_t>& touching,
-                                        const std::vector<contact::MarkerLabel>& labels, const MarkerField& now,
-                                        int min_count) {
+                                        const std::vector<contact::MarkerLabel>& labels, const MarkerField& before,
+                                        const MarkerField& now, int min_count) {
   std::vector<int> detached;
   int measured = 0, touched = 0;
   for (int id : members) {
@@ -64,7 +64,7 @@ std::vector<int> detachedUnderTheFinger(const std::vector<int>& members, const s
     if (!touching[i]) continue;
     ++touched;
     if (labels[i] == contact::MarkerLabel::stick) return {};
-    if (labels[i] == contact::MarkerLabel::detached) detached.push_back(id);
+    if (labels[i] == contact::MarkerLabel::detached && before.valid[i]) detached.push_back(id);
   }
   if (touched == measured || static_cast<int>(detached.size()) < min_count) return {};
   return detached;

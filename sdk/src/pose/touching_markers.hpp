@@ -60,11 +60,14 @@ std::vector<std::uint8_t> touchingMarkers(const contact::ContactField& field, co
 // estimate that left them: in the foundation model a press's fits follow the
 // skin beside the touch, which lags the finger, and the touching markers,
 // pushed deeper than the estimate carries them, are detached. Returns those
-// detached touching members, to stick again at the current estimate; none
-// otherwise, and none while every measured member counts as touching (the
-// test did not find the dimple's edge, so it tells nothing).
+// detached touching members measured in both frames, to stick again anchored
+// where they were in `before` under the estimate then (touching, they moved
+// with the finger over the frame: anchored where they are `now`, the frame's
+// motion would be lost); none otherwise, and none while every measured member
+// counts as touching (the test did not find the dimple's edge, so it tells
+// nothing).
 std::vector<int> detachedUnderTheFinger(const std::vector<int>& members, const std::vector<std::uint8_t>& touching,
-                                        const std::vector<contact::MarkerLabel>& labels, const MarkerField& now,
-                                        int min_count);
+                                        const std::vector<contact::MarkerLabel>& labels, const MarkerField& before,
+                                        const MarkerField& now, int min_count);
 
 }  // namespace onetip::pose

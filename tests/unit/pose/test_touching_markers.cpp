@@ -176,7 +176,7 @@ TEST(TouchingMarkers, DetachedMarkersUnderTheFingerStickAgainOnlyWhenNoneOfThemS
   // Over the synthetic sphere field: the markers the test keeps as touching are labelled detached (the
   // estimate lagged a press), the skin around them stick. They are returned, to stick again; not when one
   // of them still sticks, not when fewer than the minimum are detached, not when the test kept every member
-  // (it found no edge), and a marker not measured now is never returned.
+  // (it found no edge), and a marker not measured now, or a frame ago, is never returned.
   const Field f = sphereField(0.0, 1);
   const auto touching = pose::touchingMarkers(f.field, f.members, kN, kN, 0.0006, 0.5);
   std::vector<contact::MarkerLabel> labels(touching.size(), contact::MarkerLabel::outside);
@@ -189,17 +189,21 @@ TEST(TouchingMarkers, DetachedMarkersUnderTheFingerStickAgainOnlyWhenNoneOfThemS
   ASSERT_GE(under.size(), 9u);
   MarkerField now(kN, kN);
   for (int id : f.members) now.valid[static_cast<size_t>(id)] = 1;
-  EXPECT_EQ(pose::detachedUnderTheFinger(f.members, touching, labels, now, 4), under);
+  EXPECT_EQ(pose::detachedUnderTheFinger(f.members, touching, labels, now, now, 4), under);
 
   now.valid[static_cast<size_t>(under.front())] = 0;  // not measured this frame: left as it is
-  EXPECT_EQ(pose::detachedUnderTheFinger(f.members, touching, labels, now, 4),
+  EXPECT_EQ(pose::detachedUnderTheFinger(f.members, touching, labels, now, now, 4),
             std::vector<int>(under.begin() + 1, under.end()));
   now.valid[static_cast<size_t>(under.front())] = 1;
+  MarkerField before = now;
+  before.valid[static_cast<size_t>(under.back())] = 0;  // not measured a frame ago: nowhere to anchor it
+  EXPECT_EQ(pose::detachedUnderTheFinger(f.members, touching, labels, before, now, 4),
+            std::vector<int>(under.begin(), under.end() - 1));
 
-  EXPECT_TRUE(pose::detachedUnderTheFinger(f.members, touching, labels, now, static_cast<int>(under.size()) + 1).empty());
+  EXPECT_TRUE(pose::detachedUnderTheFinger(f.members, touching, labels, now, now, static_cast<int>(under.size()) + 1).empty());
   auto one_sticks = labels;
   one_sticks[static_cast<size_t>(under.back())] = contact::MarkerLabel::stick;
-  EXPECT_TRUE(pose::detachedUnderTheFinger(f.members, touching, one_sticks, now, 4).empty());
+  EXPECT_TRUE(pose::detachedUnderTheFinger(f.members, touching, one_sticks, now, now, 4).empty());
   const std::vector<std::uint8_t> all_touching(touching.size(), 1);
-  EXPECT_TRUE(pose::detachedUnderTheFinger(f.members, all_touching, labels, now, 4).empty());
+  EXPECT_TRUE(pose::detachedUnderTheFinger(f.members, all_touching, labels, now, now, 4).empty());
 }
