@@ -2,6 +2,7 @@
 
 #include <random>
 
+#include "sim/random_scenario.hpp"
 #include "sim/simulator.hpp"
 
 namespace onetip::poseval {
@@ -86,6 +87,14 @@ std::vector<ReplayFrame> track(const Recording& recording, input::PoseTrackerOpt
 
 std::vector<ReplayFrame> replay(const sim::Scenario& scenario, const ReplayOptions& options) {
   return track(record(scenario, options), options.tracker);
+}
+
+std::vector<ReplayFrame> replayCampaignRun(unsigned seed) {
+  const sim::RandomScenario rs = sim::randomScenario(seed);
+  ReplayOptions o;
+  o.noise_mm = 0.0003 * rs.conditions.noise_grey;
+  o.seed = seed;
+  return replay(rs.scenario, o);
 }
 
 }  // namespace onetip::poseval

@@ -63,5 +63,8 @@ Recording record(const sim::Scenario& scenario, const ReplayOptions& options = {
 // Runs a recording through a PoseTracker with options.tracker and the recording's marker depth.
 std::vector<ReplayFrame> track(const Recording& recording, input::PoseTrackerOptions options = {});
 std::vector<ReplayFrame> replay(const sim::Scenario& scenario, const ReplayOptions& options = {});
+// The pose campaign's random run `seed` (sim/random_scenario.hpp) at field level, with its noise (0.0003 mm
+// per grey level of image noise), frame for frame.
+std::vector<ReplayFrame> replayCampaignRun(unsigned seed);
 
 }  // namespace onetip::poseval
