@@ -8,6 +8,7 @@
 #include "pose/anchored_fit.hpp"
 #include "pose/centroid_motion.hpp"
 #include "pose/contact_cap.hpp"
+#include "pose/onset_reference.hpp"
 #include "pose/touching_markers.hpp"
 
 namespace onetip::pose {
@@ -49,7 +50,7 @@ PoseStep AdaptivePoseEstimator::start(const contact::ContactField& field, const 
   macro_suspect_frames_ = 0;
   pose_ = Eigen::Isometry3d::Identity();
   const contact::ContactRegion& region = field.regions.front();
-  c0_ = region.rest_centroid;
+  c0_ = onsetReferencePoint(field, now, region.markers, region.rest_centroid);
   classifier_.reset(now.size());
   classifier_.anchorNew(region.markers, now, pose_);
   history_.clear();
