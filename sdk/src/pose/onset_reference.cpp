@@ -1,7 +1,6 @@
 #include "pose/onset_reference.hpp"
 
-#include <algorithm>
-#include <cmath>
+#include "contact/grid_components.hpp"
 
 namespace onetip::pose {
 
@@ -9,35 +8,21 @@ Eigen::Vector3d onsetReferencePoint(const contact::ContactField& field, const Ma
                                     const std::vector<int>& region_markers, const Eigen::Vector3d& fallback) {
   const size_t n = field.displacement.size();
   const auto measured = [&](size_t i) { return i < now.valid.size() && now.valid[i] && field.valid[i]; };
-  double max_normal = 0;
-  for (size_t i = 0; i < n; ++i)
-    if (measured(i)) max_normal = std::max(max_normal, std::abs(field.displacement[i].z()));
-  std::vector<std::uint8_t> passes(n, 0);
-  for (size_t i = 0; i < n; ++i)
-    passes[i] = measured(i) && field.displacement[i].norm() >= kPaperRegionFraction * max_normal;
-
   std::vector<std::uint8_t> taken(n, 0);
-  const bool lattice = now.rows > 0 && now.cols > 0 && static_cast<size_t>(now.rows) * now.cols == n;
-  if (!lattice) {
-    taken = passes;
-  } else {  // grow from the tracked region over 8-connected markers that pass the cut
-    std::vector<int> open;
+  for (size_t i = 0; i < n; ++i)
+    taken[i] = measured(i) && field.displacement[i].norm() >= kPaperRegionFraction * field.max_normal_mm;
+  if (now.rows > 0 && now.cols > 0 && static_cast<size_t>(now.rows) * static_cast<size_t>(now.cols) == n) {
+    // Only the 8-connected components of that set that meet the tracked region.
+    const std::vector<int> label = contact::labelGridComponents(now.rows, now.cols, taken, nullptr);
+    std::vector<std::uint8_t> meets;
     for (int id : region_markers) {
-      const size_t i = static_cast<size_t>(id);
-      if (passes[i] && !taken[i]) taken[i] = 1, open.push_back(id);
+      const int l = label[static_cast<size_t>(id)];
+      if (l < 0) continue;
+      if (static_cast<size_t>(l) >= meets.size()) meets.resize(static_cast<size_t>(l) + 1, 0);
+      meets[static_cast<size_t>(l)] = 1;
     }
-    while (!open.empty()) {
-      const int id = open.back();
-      open.pop_back();
-      const int r = id / now.cols, c = id % now.cols;
-      for (int dr = -1; dr <= 1; ++dr)
-        for (int dc = -1; dc <= 1; ++dc) {
-          const int rr = r + dr, cc = c + dc;
-          if (rr < 0 || cc < 0 || rr >= now.rows || cc >= now.cols) continue;
-          const size_t j = static_cast<size_t>(rr * now.cols + cc);
-          if (passes[j] && !taken[j]) taken[j] = 1, open.push_back(static_cast<int>(j));
-        }
-    }
+    for (size_t i = 0; i < n; ++i)
+      taken[i] = label[i] >= 0 && static_cast<size_t>(label[i]) < meets.size() && meets[static_cast<size_t>(label[i])];
   }
   Eigen::Vector3d sum = Eigen::Vector3d::Zero();
   int count = 0;

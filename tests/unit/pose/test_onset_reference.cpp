@@ -5,6 +5,7 @@
 // marker.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "pose/onset_reference.hpp"
@@ -42,6 +43,7 @@ Onset landing(bool second_finger) {
     o.field.displacement[static_cast<size_t>(id)] = u;
     o.now.set(id, p + u);
     if (nd >= 0.4 * 0.6 && r1 < 3.0) o.region.push_back(id);
+    o.field.max_normal_mm = std::max(o.field.max_normal_mm, nd);  // as the contact stage sets it
   }
   return o;
 }
