@@ -5,7 +5,12 @@
 // in contact while max |u_i| > contact_threshold_mm (paper: 0.1 mm); region =
 // markers with |u_i| >= region_fraction * max |u_i.z| (paper: 50%), split into
 // 8-connected components on the grid; components smaller than
-// min_region_markers are treated as noise and dropped.
+// min_region_markers are treated as noise and dropped. The default, 1, keeps
+// the contact rule exact: the pad is in contact whenever its largest
+// deformation exceeds the threshold, also while a fingertip between markers
+// of a coarse pattern has pushed only the nearest one past the region cut
+// (with 2, a 4 mm sphere on the 11 x 11 pattern went 0.44 mm deep before the
+// contact began, and dz kept that offset: the truth starts at the threshold).
 // Confidence: a marker of `now` whose confidence is below min_confidence is
 // treated as not measured for the frame (ContactField::valid = 0). The
 // default 0.2 follows the grid tracker's own tolerance (vision/grid_tracker.hpp:
@@ -38,7 +43,7 @@ struct ContactAnalyzerOptions {
   double contact_threshold_mm = 0.1;  // on the largest deformation modulus
   RegionMeasure region_measure = RegionMeasure::normal;
   double region_fraction = 0.4;       // of the largest normal deformation
-  int min_region_markers = 2;         // smaller components are noise
+  int min_region_markers = 1;         // [1, ...] smaller components are noise
   int min_valid_markers = 9;          // fewer valid pairs: status too_few_markers
   double min_confidence = 0.2;        // a marker graded below this is not measured (0: use every marker)
   void validate() const;              // throws InputError naming the bad field

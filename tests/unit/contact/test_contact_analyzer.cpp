@@ -59,6 +59,23 @@ TEST(ContactAnalyzer, BelowTheThresholdThereIsNoContact) {
   EXPECT_EQ(cf.status, contact::ContactFieldStatus::ok);
 }
 
+TEST(ContactAnalyzer, OneMarkerPastTheThresholdIsAContact) {
+  // A fingertip between the markers of a coarse pattern (11 x 11 over 19.2 mm)
+  // pushes only the nearest one past the region cut: its largest deformation
+  // (0.3 mm) exceeds the 0.1 mm threshold, so the pad is in contact, its
+  // region that one marker (the neighbours, 1.92 mm away, move 0.003 mm).
+  const MarkerField rest = synth::flatGrid(11, 11, 1.92);
+  const contact::ContactField cf = ContactAnalyzer().analyze(synth::deformed(rest, synth::dimple(0.3, 0.9)), rest);
+  ASSERT_TRUE(cf.in_contact);
+  ASSERT_EQ(cf.regions.size(), 1u);
+  ASSERT_EQ(cf.regions[0].markers.size(), 1u);
+  EXPECT_EQ(cf.regions[0].markers[0], 5 * 11 + 5);  // the centre marker, at the dimple's apex
+  // Asking for two-marker regions drops it (and with it the contact).
+  ContactAnalyzerOptions two;
+  two.min_region_markers = 2;
+  EXPECT_FALSE(ContactAnalyzer(two).analyze(synth::deformed(rest, synth::dimple(0.3, 0.9)), rest).in_contact);
+}
+
 TEST(ContactAnalyzer, TooFewMarkersIsReportedNotGuessed) {
   const MarkerField rest = synth::flatGrid(5, 5);
   MarkerField now = synth::deformed(rest, synth::dimple(1.0, 2.0));
