@@ -100,32 +100,40 @@ TURN_BINS = [("0", 0, 1e-9), ("0-1", 1e-9, 1), ("1-5", 1, 5), ("5-15", 5, 15), (
 
 def envelope_chart(data, out_dir):
     keys = [("model", "contact model"), ("indenter", "indenter"), ("markers", "markers per side"),
-            ("fps", "frame rate"), ("gross_slip_turn_deg", "the truth's turn in gross slip (deg)")]
-    fig, axes = plt.subplots(2, 3, figsize=(13.5, 8))
+            ("fps", "frame rate"), ("gross_slip_turn_deg", "the truth's turn in gross slip (deg)"),
+            ("gross_slip_turn_before_excess_deg", "the truth's turn in gross slip before it diverged (deg)")]
+    fig, axes = plt.subplots(2, 3, figsize=(13.5, 8.5))
     grid = axes.flatten()
-    grid[-1].axis("off")
     for ax, (key, label) in zip(grid, keys):
         for offset, ((_, name, colour), rs) in zip((-0.2, 0.2), data):
-            rs = [r for r in rs if r["level"] == "field"]
+            # The turn before the divergence depends on the estimator: files written
+            # before it was a column have no bars there.
+            rs = [r for r in rs if r["level"] == "field" and r.get(key, "nan") != "nan"]
+            if not rs:
+                continue
             if key == "fps":
                 bins = [(15, 30), (30, 60), (60, 120), (120, 241)]
                 groups = [("%d-%d" % b, [r for r in rs if b[0] <= float(r["fps"]) < b[1]]) for b in bins]
-            elif key == "gross_slip_turn_deg":
+            elif key.startswith("gross_slip_turn"):
                 groups = [(label_, [r for r in rs if lo <= float(r[key]) < hi]) for label_, lo, hi in TURN_BINS]
             else:
                 values = sorted({r[key] for r in rs}, key=lambda v: (len(v), v))
                 groups = [(v, [r for r in rs if r[key] == v]) for v in values]
-            share = [100.0 * sum(r["diverged"] == "1" for r in g) / max(1, len(g)) for _, g in groups]
+            if key == "gross_slip_turn_before_excess_deg":  # the diverged runs, counted
+                share = [sum(r["diverged"] == "1" for r in g) for _, g in groups]
+                ax.set_ylabel("diverged runs")
+            else:
+                share = [100.0 * sum(r["diverged"] == "1" for r in g) / max(1, len(g)) for _, g in groups]
+                ax.set_ylim(0, 100)
             ax.bar([i + offset for i in range(len(groups))], share, width=0.4, color=colour, label=name)
             ax.set_xticks(range(len(groups)))
             ax.set_xticklabels([g for g, _ in groups], rotation=45, fontsize=8)
         ax.set_xlabel(label)
-        ax.set_ylim(0, 100)
     grid[0].set_ylabel("runs diverged (%)")
     grid[3].set_ylabel("runs diverged (%)")
-    grid[-1].legend(*grid[0].get_legend_handles_labels(), fontsize=9, loc="center")
+    fig.legend(*grid[0].get_legend_handles_labels(), fontsize=9, loc="lower center", ncol=2)
     fig.suptitle("Failure envelope: share of runs with an axis beyond 1 mm / 5 deg for more than 3 frames")
-    fig.tight_layout()
+    fig.tight_layout(rect=(0, 0.05, 1, 1))
     fig.savefig(os.path.join(out_dir, "campaign_envelope.png"), dpi=80)
     plt.close(fig)
 
@@ -237,6 +245,13 @@ def main():
                 if g:
                     print("%s %s, truth turns %s deg in gross slip: %d runs, %d diverged" % (
                         name, level, label_, len(g), sum(r["diverged"] == "1" for r in g)))
+            diverged = [r for r in rs if r["level"] == level and r["diverged"] == "1"
+                        and r.get("gross_slip_turn_before_excess_deg", "nan") != "nan"]
+            for label_, lo, hi in TURN_BINS:
+                n = sum(lo <= float(r["gross_slip_turn_before_excess_deg"]) < hi for r in diverged)
+                if diverged:
+                    print("%s %s, diverged after the truth turned %s deg in gross slip: %d of %d" % (
+                        name, level, label_, n, len(diverged)))
 
 
 if __name__ == "__main__":

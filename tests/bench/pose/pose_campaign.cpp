@@ -94,7 +94,7 @@ std::vector<std::string> header() {
   for (const char* axis : {"dx", "dy", "dz", "yaw", "pitch", "roll"}) h.push_back(std::string("max_") + axis);
   for (const char* c : {"longest_excess", "first_excess_frame", "excess_axis", "excess_truth_state", "excess_model",
                         "diverged", "ms_per_frame", "marker_rmse_mm", "stick_precision", "stick_recall",
-                        "excess_true_stick", "gross_slip_turn_deg"})
+                        "excess_true_stick", "gross_slip_turn_deg", "gross_slip_turn_before_excess_deg"})
     h.push_back(c);
   return h;
 }
@@ -123,6 +123,7 @@ std::vector<std::string> row(const char* level, const sim::RandomConditions& c, 
   r.push_back(num(s.stick_recall));
   r.push_back(std::to_string(s.excess_true_stick));
   r.push_back(num(s.gross_slip_turn_deg));
+  r.push_back(num(s.gross_slip_turn_before_excess_deg));
   return r;
 }
 

@@ -38,6 +38,7 @@ RunScore scoreRun(const std::vector<ReplayFrame>& frames) {
   int stretch_true_stick = -1;
   long labelled = 0, truly = 0, both = 0;
   std::array<double, 3> turned{};  // yaw, pitch, roll while in gross slip
+  std::vector<double> turned_by_frame(frames.size(), 0.0);  // the largest of the three up to each frame
   for (size_t k = 0; k < frames.size(); ++k) {
     const ReplayFrame& f = frames[k];
     if (k > 0 && f.gt_contact && frames[k - 1].gt_contact && f.gt_state == ContactState::slip) {
@@ -45,6 +46,7 @@ RunScore scoreRun(const std::vector<ReplayFrame>& frames) {
       turned[1] += std::abs(f.gt.pitch - frames[k - 1].gt.pitch);
       turned[2] += std::abs(f.gt.roll - frames[k - 1].gt.roll);
     }
+    turned_by_frame[k] = std::max({turned[0], turned[1], turned[2]});
     if (!f.gt_contact) {
       stretch = 0;
       continue;
@@ -95,6 +97,9 @@ RunScore scoreRun(const std::vector<ReplayFrame>& frames) {
   for (size_t a = 0; a < 6; ++a) s.linear_rmse[a] = s.linear_frames ? std::sqrt(squares[a] / s.linear_frames) : 0.0;
   s.diverged = s.longest_excess > kDivergenceFrames;
   s.gross_slip_turn_deg = std::max({turned[0], turned[1], turned[2]});
+  s.gross_slip_turn_before_excess_deg = s.first_excess_frame >= 0
+                                            ? turned_by_frame[static_cast<size_t>(s.first_excess_frame)]
+                                            : s.gross_slip_turn_deg;
   return s;
 }
 

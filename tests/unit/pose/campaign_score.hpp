@@ -20,7 +20,10 @@
 // sticks) and was in contact the frame before, the sum of |change| of each of
 // the truth's yaw, pitch and roll; the largest of the three, deg. While no
 // marker sticks, no marker turns with the finger: a condition of the run,
-// not a score of the estimate.
+// not a score of the estimate. The same sum up to the first frame of the
+// longest excess stretch (the whole run's when there is none) tells a
+// divergence that began before the finger turned in gross slip from one
+// that followed such a turn.
 #pragma once
 
 #include <array>
@@ -56,6 +59,7 @@ struct RunScore {
   int excess_true_stick = -1;  // markers truly sticking at the first frame of that stretch (-1: none)
   double stick_precision = 0, stick_recall = 0;  // of the estimate's stick labels (see above; 0 when undefined)
   double gross_slip_turn_deg = 0;  // the truth's turn while in gross slip (see above)
+  double gross_slip_turn_before_excess_deg = 0;  // ... up to first_excess_frame (see above)
 };
 
 RunScore scoreRun(const std::vector<ReplayFrame>& frames);

@@ -92,3 +92,21 @@ TEST(CampaignScore, GrossSlipTurnSumsTheTruthsTurnWhileNoMarkerSticks) {
   // In gross slip: frames 1 (+2), 2 (+2), 3 (-1) and 5 (0); frame 4 (+3) is partial slip.
   EXPECT_NEAR(scoreRun(frames).gross_slip_turn_deg, 5.0, 1e-12);
 }
+
+TEST(CampaignScore, TheTurnBeforeTheDivergenceStopsAtItsFirstFrame) {
+  // Roll turns 2 deg a frame in gross slip throughout; the estimate goes 1.1 mm off from frame 3 to the end.
+  std::vector<ReplayFrame> frames(8, frame(0.0, 0.0));
+  for (size_t k = 0; k < frames.size(); ++k) {
+    frames[k].gt.roll = frames[k].raw.roll = 2.0 * static_cast<double>(k);
+    frames[k].gt_state = k == 0 ? ContactState::stick : ContactState::slip;
+    if (k >= 3) frames[k].raw.dx = 1.1;
+  }
+  RunScore s = scoreRun(frames);
+  ASSERT_EQ(s.first_excess_frame, 3);
+  EXPECT_NEAR(s.gross_slip_turn_deg, 14.0, 1e-12);                // frames 1..7
+  EXPECT_NEAR(s.gross_slip_turn_before_excess_deg, 6.0, 1e-12);   // frames 1..3
+  for (size_t k = 3; k < frames.size(); ++k) frames[k].raw.dx = 0.0;  // no excess: the whole run's
+  s = scoreRun(frames);
+  EXPECT_EQ(s.first_excess_frame, -1);
+  EXPECT_NEAR(s.gross_slip_turn_before_excess_deg, 14.0, 1e-12);
+}
