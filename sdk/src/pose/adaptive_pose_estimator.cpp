@@ -67,18 +67,6 @@ PoseStep AdaptivePoseEstimator::start(const contact::ContactField& field, const 
 
 namespace {
 
-ContactCap capOf(const contact::ContactField& field, const std::vector<int>& members, const MarkerField& now) {
-  std::vector<Eigen::Vector3d> p;
-  std::vector<double> n;
-  for (int id : members) {
-    const size_t i = static_cast<size_t>(id);
-    if (!now.valid[i] || !field.valid[i]) continue;
-    p.push_back(now.position[i]);
-    n.push_back(-field.displacement[i].z());
-  }
-  return fitContactCap(p, n, field.region_cut_mm);
-}
-
 double tiltBetween(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b) {
   const Eigen::Vector3d za = a.linear().col(2), zb = b.linear().col(2);
   return std::atan2(za.cross(zb).norm(), za.dot(zb));
@@ -228,7 +216,7 @@ AdaptivePoseEstimator::Drift AdaptivePoseEstimator::footprintDrift(const contact
   const Eigen::Vector3d &before = common.before, &after = common.after;
   const Eigen::Isometry3d motion = next * old.pose.inverse();
   const Eigen::AngleAxisd turn(motion.linear());
-  const Eigen::Vector2d rho = rollingShift(capOf(field, region.markers, now), turn.angle() * turn.axis());
+  const Eigen::Vector2d rho = rollingShift(fitContactCap(field, region.markers, now), turn.angle() * turn.axis());
   out.drift = after - motion * before;
   Eigen::Vector3d travel = after - before;
   out.drift.z() = 0;
@@ -290,7 +278,7 @@ bool AdaptivePoseEstimator::stickingAgain(const contact::ContactField& field, co
   const CommonFootprints common = commonFootprints(old, field, members, now);
   const Eigen::Vector3d &before = common.before, &after = common.after;
   const Eigen::Vector2d rho =
-      vouched > 0 ? rollingShift(capOf(field, members, now), vouched * turn.axis()) : Eigen::Vector2d::Zero();
+      vouched > 0 ? rollingShift(fitContactCap(field, members, now), vouched * turn.axis()) : Eigen::Vector2d::Zero();
   const Eigen::Vector2d lag = (after - fit.motion * before).head<2>();
   // Distance from the lag to the segment from no shift to the full rolling shift.
   const double along = rho.squaredNorm() > 0 ? std::clamp(lag.dot(rho) / rho.squaredNorm(), 0.0, 1.0) : 0.0;

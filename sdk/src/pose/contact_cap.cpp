@@ -3,7 +3,9 @@
 #include <Eigen/Dense>
 #include <cmath>
 
+#include "contact/contact_field.hpp"
 #include "contact/footprint_centre.hpp"
+#include "core/marker_field.hpp"
 
 namespace onetip::pose {
 
@@ -49,6 +51,18 @@ ContactCap fitContactCap(const std::vector<Eigen::Vector3d>& p, const std::vecto
 Eigen::Vector2d rollingShift(const ContactCap& cap, const Eigen::Vector3d& w) {
   if (!cap.valid) return Eigen::Vector2d::Zero();
   return cap.curvature.inverse() * Eigen::Vector2d(w.y(), -w.x());
+}
+
+ContactCap fitContactCap(const contact::ContactField& field, const std::vector<int>& members, const MarkerField& now) {
+  std::vector<Eigen::Vector3d> p;
+  std::vector<double> n;
+  for (int id : members) {
+    const size_t i = static_cast<size_t>(id);
+    if (!now.valid[i] || !field.valid[i]) continue;
+    p.push_back(now.position[i]);
+    n.push_back(-field.displacement[i].z());
+  }
+  return fitContactCap(p, n, field.region_cut_mm);
 }
 
 }  // namespace onetip::pose

@@ -20,6 +20,13 @@
 #include <Eigen/Core>
 #include <vector>
 
+namespace onetip {
+struct MarkerField;
+namespace contact {
+struct ContactField;
+}
+}  // namespace onetip
+
 namespace onetip::pose {
 
 constexpr double kMaxCapRadiusMm = 1000.0;
@@ -32,6 +39,8 @@ struct ContactCap {
 
 ContactCap fitContactCap(const std::vector<Eigen::Vector3d>& positions, const std::vector<double>& normal_deformation,
                          double cut_mm);
+// The same over a region's `members` measured in both `field` and `now`, with the field's region cut.
+ContactCap fitContactCap(const contact::ContactField& field, const std::vector<int>& members, const MarkerField& now);
 
 // rho = H^-1 (w_y, -w_x) (mm, S.xy); zero for an invalid cap.
 Eigen::Vector2d rollingShift(const ContactCap& cap, const Eigen::Vector3d& rotation_vector);
