@@ -247,11 +247,10 @@ def main():
                         name, level, label_, len(g), sum(r["diverged"] == "1" for r in g)))
             diverged = [r for r in rs if r["level"] == level and r["diverged"] == "1"
                         and r.get("gross_slip_turn_before_excess_deg", "nan") != "nan"]
-            for label_, lo, hi in TURN_BINS:
+            for label_, lo, hi in TURN_BINS if diverged else []:
                 n = sum(lo <= float(r["gross_slip_turn_before_excess_deg"]) < hi for r in diverged)
-                if diverged:
-                    print("%s %s, diverged after the truth turned %s deg in gross slip: %d of %d" % (
-                        name, level, label_, n, len(diverged)))
+                print("%s %s, diverged after the truth turned %s deg in gross slip: %d of %d" % (
+                    name, level, label_, n, len(diverged)))
 
 
 if __name__ == "__main__":

@@ -9,7 +9,7 @@
 // the contact rule exact: the pad is in contact whenever its largest
 // deformation exceeds the threshold, also while a fingertip between markers
 // of a coarse pattern has pushed only the nearest one past the region cut
-// (with 2, a 4 mm sphere on the 11 x 11 pattern went 0.44 mm deep before the
+// (with 2, a 4.5 mm sphere on the 11 x 11 pattern went 0.44 mm deep before the
 // contact began, and dz kept that offset: the truth starts at the threshold).
 // Confidence: a marker of `now` whose confidence is below min_confidence is
 // treated as not measured for the frame (ContactField::valid = 0). The

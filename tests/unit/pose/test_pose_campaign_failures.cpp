@@ -125,7 +125,7 @@ TEST(FailurePoints, MarkersUnderTheFingerThatStickAgainKeepTheFramesMotion) {
 }
 
 TEST(FailurePoints, AContactBeginsWhenOneMarkerPassesTheThreshold) {
-  // The campaign's random run 114 (foundation model, a 7 mm sphere on an 11x11 pattern of 1.92 mm pitch): the
+  // The campaign's random run 114 (foundation model, a 4.5 mm sphere on an 11x11 pattern of 1.92 mm pitch): the
   // sphere lands between markers and presses 0.15 mm per frame. Its nearest marker passed the 0.1 mm contact
   // threshold at frame 10, but alone above the region cut, and regions of one marker were dropped as noise:
   // the contact began at frame 13, 0.44 mm deep, and dz kept that offset (the truth starts at the threshold,
