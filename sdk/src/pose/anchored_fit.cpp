@@ -1,6 +1,5 @@
 #include "pose/anchored_fit.hpp"
 
-#include <algorithm>
 #include <cmath>
 
 namespace onetip::pose {
@@ -53,22 +52,6 @@ AnchoredFit fitAnchored(const contact::StickSlipClassifier& classifier, const co
   }
   out.fit = fitTranslation(from, to);
   return out;
-}
-
-AnchoredFit fitAnchoredOnTheCap(const contact::StickSlipClassifier& classifier, const contact::ContactField& field,
-                                std::vector<int>& ids, const std::vector<std::uint8_t>& cap, const MarkerField& now,
-                                const Eigen::Isometry3d& pose, const EstimatorThresholds& t,
-                                double rotation_significance) {
-  std::vector<int> on_cap;
-  for (int id : ids)
-    if (static_cast<size_t>(id) < cap.size() && cap[static_cast<size_t>(id)]) on_cap.push_back(id);
-  const AnchoredFit fit = fitAnchored(classifier, field, ids, now, pose, t, rotation_significance);
-  const bool cap_kept = std::all_of(on_cap.begin(), on_cap.end(), [&](int id) {
-    return std::find(ids.begin(), ids.end(), id) != ids.end();
-  });
-  if (cap_kept) return fit;
-  ids = on_cap;
-  return fitAnchored(classifier, field, ids, now, pose, t, rotation_significance);
 }
 
 RigidFit fitConsecutive(const std::vector<int>& members, const MarkerField& before, const MarkerField& now,

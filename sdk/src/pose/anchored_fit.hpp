@@ -16,7 +16,6 @@
 // growing against the anchors until it is significant; noise does not).
 #pragma once
 
-#include <cstdint>
 #include <vector>
 
 #include "contact/contact_field.hpp"
@@ -36,18 +35,6 @@ struct AnchoredFit {
 AnchoredFit fitAnchored(const contact::StickSlipClassifier& classifier, const contact::ContactField& field,
                         std::vector<int>& ids, const MarkerField& now, const Eigen::Isometry3d& pose,
                         const EstimatorThresholds& thresholds, double rotation_significance);
-
-// The same, for a contact whose cap (`cap`, per marker id:
-// touching_markers.hpp's capMarkers; empty or all zero: fitAnchored as is)
-// must carry the fit: when the trim drops any of the cap's markers among
-// `ids`, the skin beside the touch carried the fit (in a press it dips by
-// about half as much as the touch and outnumbers it, so the touch looks like
-// the outlier), and the fit is redone over the cap's markers among `ids`
-// alone, which fix what their spread fixes (a translation, for one or two).
-AnchoredFit fitAnchoredOnTheCap(const contact::StickSlipClassifier& classifier, const contact::ContactField& field,
-                                std::vector<int>& ids, const std::vector<std::uint8_t>& cap, const MarkerField& now,
-                                const Eigen::Isometry3d& pose, const EstimatorThresholds& thresholds,
-                                double rotation_significance);
 
 // Least-squares motion of the valid `members` between two marker fields
 // (robust with `robust_mm` > 0; translation only when asked).
