@@ -126,11 +126,15 @@ Eigen::Isometry3d AdaptivePoseEstimator::solveIncrement(const contact::ContactFi
     classifier_.reattach(detachedUnderTheFinger(members, touching, classifier_.labels(), before, now,
                                                 options_.min_thin_stick_markers),
                          before, pose_);
+  // A smaller contact's fit is carried by its cap when the trim would drop most of it (fitAnchoredOnTheCap).
+  const std::vector<std::uint8_t> cap = region_developed
+                                            ? std::vector<std::uint8_t>{}
+                                            : capMarkers(field, members, now.rows, now.cols, t_.noise_mm);
   std::vector<int> stick_ids = stickSet();
-  AnchoredFit af = fitAnchored(classifier_, field, stick_ids, now, pose_, t_, options_.rotation_significance);
+  AnchoredFit af = fitAnchoredOnTheCap(classifier_, field, stick_ids, cap, now, pose_, t_, options_.rotation_significance);
   if (af.fit.ok && classifier_.classify(now, field.normal, af.fit.motion * pose_) > 0) {
     stick_ids = stickSet();
-    af = fitAnchored(classifier_, field, stick_ids, now, pose_, t_, options_.rotation_significance);
+    af = fitAnchoredOnTheCap(classifier_, field, stick_ids, cap, now, pose_, t_, options_.rotation_significance);
   }
   std::vector<StickCorrespondence> stick;
   for (int id : stick_ids)

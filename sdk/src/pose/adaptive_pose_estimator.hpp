@@ -16,7 +16,11 @@
 //     min_thin_stick_markers are left; and when none of those sticks while at
 //     least min_thin_stick_markers of them are labelled detached (pushed along
 //     the normal further than the estimate carries them), those stick again
-//     at T_{k-1} (detachedUnderTheFinger). The kept markers are the stick set.
+//     at T_{k-1} (detachedUnderTheFinger). On a smaller contact, when the
+//     trim drops most labelled markers of the dimple's cap (capMarkers), the
+//     fit is redone over those alone (fitAnchoredOnTheCap: the skin beside
+//     a touch lags it and outnumbers it as a press begins). The kept markers
+//     are the stick set.
 //  2. The increment dT_k = T_k T_{k-1}^-1 from the model pose/model_selection.hpp picks:
 //       full stick (no slipping marker)      -> Kabsch / Umeyama (rigid_fit.hpp, Eq. 1);
 //       partial slip (Eq. 16 holds)          -> Ceres stick/slip least squares (Eq. 13-15);

@@ -1,5 +1,6 @@
 #include "pose/anchored_fit.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace onetip::pose {
@@ -52,6 +53,21 @@ AnchoredFit fitAnchored(const contact::StickSlipClassifier& classifier, const co
   }
   out.fit = fitTranslation(from, to);
   return out;
+}
+
+AnchoredFit fitAnchoredOnTheCap(const contact::StickSlipClassifier& classifier, const contact::ContactField& field,
+                                std::vector<int>& ids, const std::vector<std::uint8_t>& cap, const MarkerField& now,
+                                const Eigen::Isometry3d& pose, const EstimatorThresholds& t,
+                                double rotation_significance) {
+  std::vector<int> on_cap;
+  for (int id : ids)
+    if (static_cast<size_t>(id) < cap.size() && cap[static_cast<size_t>(id)]) on_cap.push_back(id);
+  const AnchoredFit fit = fitAnchored(classifier, field, ids, now, pose, t, rotation_significance);
+  const auto kept = std::count_if(on_cap.begin(), on_cap.end(),
+                                  [&](int id) { return std::find(ids.begin(), ids.end(), id) != ids.end(); });
+  if (2 * static_cast<size_t>(kept) >= on_cap.size()) return fit;
+  ids = on_cap;
+  return fitAnchored(classifier, field, ids, now, pose, t, rotation_significance);
 }
 
 RigidFit fitConsecutive(const std::vector<int>& members, const MarkerField& before, const MarkerField& now,

@@ -16,6 +16,7 @@
 // growing against the anchors until it is significant; noise does not).
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include "contact/contact_field.hpp"
@@ -35,6 +36,22 @@ struct AnchoredFit {
 AnchoredFit fitAnchored(const contact::StickSlipClassifier& classifier, const contact::ContactField& field,
                         std::vector<int>& ids, const MarkerField& now, const Eigen::Isometry3d& pose,
                         const EstimatorThresholds& thresholds, double rotation_significance);
+
+// The same, for a contact whose cap (`cap`, per marker id:
+// touching_markers.hpp's capMarkers; empty or all zero: fitAnchored as is)
+// must carry the fit: when the trim drops most of the cap's markers among
+// `ids` (more than half), the skin beside the touch carried the fit (in a
+// press it dips by about half as much as the touch and outnumbers it, so the
+// touch looks like the outlier), and the fit is redone over the cap's
+// markers among `ids` alone, which fix what their spread fixes (a
+// translation, for one or two). A cap marker trimmed alone is one beginning
+// to move off the finger, as any other; the fit stands (refitting over the
+// rest of a cap too thin to fix a turn froze a rolling finger, campaign
+// seed 140).
+AnchoredFit fitAnchoredOnTheCap(const contact::StickSlipClassifier& classifier, const contact::ContactField& field,
+                                std::vector<int>& ids, const std::vector<std::uint8_t>& cap, const MarkerField& now,
+                                const Eigen::Isometry3d& pose, const EstimatorThresholds& thresholds,
+                                double rotation_significance);
 
 // Least-squares motion of the valid `members` between two marker fields
 // (robust with `robust_mm` > 0; translation only when asked).

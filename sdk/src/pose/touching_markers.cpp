@@ -11,6 +11,8 @@ namespace onetip::pose {
 
 namespace {
 
+double normalDeformation(const contact::ContactField& field, size_t i) { return -field.displacement[i].z(); }
+
 // The core (ids) spans an area: the smaller principal RMS extent of its lattice coordinates.
 bool spansArea(const std::vector<int>& core, int cols, double min_pitches) {
   std::vector<Eigen::Vector3d> lattice;
@@ -18,18 +20,17 @@ bool spansArea(const std::vector<int>& core, int cols, double min_pitches) {
   return lattice.size() >= 3 && planarSpread(lattice).x() >= min_pitches;
 }
 
-}  // namespace
-
-std::vector<std::uint8_t> touchingMarkers(const contact::ContactField& field, const std::vector<int>& members, int rows,
-                                          int cols, double sigma_mm, double core_spread_pitches) {
-  std::vector<std::uint8_t> touching(field.displacement.size(), 0);
-  if (rows <= 0 || cols <= 0 || static_cast<size_t>(rows) * static_cast<size_t>(cols) != touching.size()) {
-    for (int id : members) touching[static_cast<size_t>(id)] = 1;  // no lattice to judge by
-    return touching;
-  }
-  const double bound = 3.0 * std::sqrt(20.0) * sigma_mm;
-  const auto normal = [&](size_t i) { return -field.displacement[i].z(); };
+// Per member, whether it is not clearly convex (kept), and the concave core.
+struct LaplacianScan {
+  std::vector<std::uint8_t> not_convex;  // per marker id
   std::vector<int> core;
+};
+
+LaplacianScan scanLaplacian(const contact::ContactField& field, const std::vector<int>& members, int rows, int cols,
+                            double sigma_mm) {
+  LaplacianScan scan;
+  scan.not_convex.assign(field.displacement.size(), 0);
+  const double bound = 3.0 * std::sqrt(20.0) * sigma_mm;
   for (int id : members) {
     const int r = id / cols, c = id % cols;
     double laplacian = 0;
@@ -39,17 +40,49 @@ std::vector<std::uint8_t> touchingMarkers(const contact::ContactField& field, co
       if (rr < 0 || cc < 0 || rr >= rows || cc >= cols) continue;
       const size_t j = static_cast<size_t>(rr * cols + cc);
       if (!field.valid[j]) continue;
-      laplacian += normal(j) - normal(static_cast<size_t>(id)), ++measured;
+      laplacian += normalDeformation(field, j) - normalDeformation(field, static_cast<size_t>(id)), ++measured;
     }
-    touching[static_cast<size_t>(id)] = measured < 4 || laplacian <= bound;
-    if (measured == 4 && laplacian < -2.0 * bound) core.push_back(id);
+    scan.not_convex[static_cast<size_t>(id)] = measured < 4 || laplacian <= bound;
+    if (measured == 4 && laplacian < -2.0 * bound) scan.core.push_back(id);
   }
-  if (core_spread_pitches <= 0 || !spansArea(core, cols, core_spread_pitches)) return touching;
+  return scan;
+}
+
+bool latticeMatches(const contact::ContactField& field, int rows, int cols) {
+  return rows > 0 && cols > 0 && static_cast<size_t>(rows) * static_cast<size_t>(cols) == field.displacement.size();
+}
+
+// The members not clearly convex and at least as deep as the core's shallowest marker.
+std::vector<std::uint8_t> coreAndDeeper(const contact::ContactField& field, const std::vector<int>& members,
+                                        const LaplacianScan& scan) {
+  std::vector<std::uint8_t> kept = scan.not_convex;
   double shallowest = std::numeric_limits<double>::infinity();
-  for (int id : core) shallowest = std::min(shallowest, normal(static_cast<size_t>(id)));
+  for (int id : scan.core) shallowest = std::min(shallowest, normalDeformation(field, static_cast<size_t>(id)));
   for (int id : members)
-    if (normal(static_cast<size_t>(id)) < shallowest) touching[static_cast<size_t>(id)] = 0;
-  return touching;
+    if (normalDeformation(field, static_cast<size_t>(id)) < shallowest) kept[static_cast<size_t>(id)] = 0;
+  return kept;
+}
+
+}  // namespace
+
+std::vector<std::uint8_t> touchingMarkers(const contact::ContactField& field, const std::vector<int>& members, int rows,
+                                          int cols, double sigma_mm, double core_spread_pitches) {
+  if (!latticeMatches(field, rows, cols)) {
+    std::vector<std::uint8_t> touching(field.displacement.size(), 0);
+    for (int id : members) touching[static_cast<size_t>(id)] = 1;  // no lattice to judge by
+    return touching;
+  }
+  const LaplacianScan scan = scanLaplacian(field, members, rows, cols, sigma_mm);
+  if (core_spread_pitches <= 0 || !spansArea(scan.core, cols, core_spread_pitches)) return scan.not_convex;
+  return coreAndDeeper(field, members, scan);
+}
+
+std::vector<std::uint8_t> capMarkers(const contact::ContactField& field, const std::vector<int>& members, int rows,
+                                     int cols, double sigma_mm) {
+  if (!latticeMatches(field, rows, cols)) return std::vector<std::uint8_t>(field.displacement.size(), 0);
+  const LaplacianScan scan = scanLaplacian(field, members, rows, cols, sigma_mm);
+  if (scan.core.empty()) return std::vector<std::uint8_t>(field.displacement.size(), 0);
+  return coreAndDeeper(field, members, scan);
 }
 
 std::vector<int> detachedUnderTheFinger(const std::vector<int>& members, const std::vector<std::uint8_t>& touching,

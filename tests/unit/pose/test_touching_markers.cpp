@@ -121,29 +121,38 @@ TEST(TouchingMarkers, AMarkerWithANeighbourMissingIsKeptNonMembersAreNotAndNoLat
   for (int id : f.members) EXPECT_TRUE(unjudged[static_cast<size_t>(id)]);
 }
 
-// Early in a press into a foundation: the same cap at the bottom of a dent
-// that decays as a Pasternak foundation's, n = E K0(r / l) / K0(a / l) with a
-// long l = 15 mm, so the skin beside the touch is only faintly convex
-// (L = n h^2 / l^2, under the convex cut) and fills most of the 40 % region.
-TEST(TouchingMarkers, TheCapsConcaveCoreLeavesOutFaintlyConvexSkinBesideTheTouch) {
-  constexpr double kEdge = 1.0, kLength = 15.0, kSigma = 0.0006;
+// A cap (radius R, depth d, its edge at n = E) at the bottom of a dent that
+// decays as a Pasternak foundation's, n = E K0(r / l) / K0(a / l) outside the
+// cap's edge a = sqrt(2 R d); members: n at least 40 % of its peak.
+Field foundationField(double cap_radius, double cap_depth, double edge, double length, double noise_mm,
+                      unsigned seed) {
   Field f;
   const int n = kN * kN;
   f.field.displacement.assign(n, Eigen::Vector3d::Zero());
   f.field.valid.assign(n, 1);
   f.under.assign(n, false);
-  const double a = std::sqrt(2 * kRadius * kDepth);
-  std::mt19937 rng(5);
-  std::normal_distribution<double> noise(0, kSigma);
+  const double a = std::sqrt(2 * cap_radius * cap_depth);
+  std::mt19937 rng(seed);
+  std::normal_distribution<double> noise(0, noise_mm);
   for (int id = 0; id < n; ++id) {
     const double x = (id % kN - kN / 2) * kPitch, y = (id / kN - kN / 2) * kPitch, r = std::hypot(x, y);
     const bool inside = r < a;
-    const double nd = inside ? kEdge + (a * a - r * r) / (2 * kRadius)
-                             : kEdge * std::cyl_bessel_k(0.0, r / kLength) / std::cyl_bessel_k(0.0, a / kLength);
+    const double nd = inside ? edge + (a * a - r * r) / (2 * cap_radius)
+                             : edge * std::cyl_bessel_k(0.0, r / length) / std::cyl_bessel_k(0.0, a / length);
     f.field.displacement[static_cast<size_t>(id)].z() = -(nd + noise(rng));
     f.under[static_cast<size_t>(id)] = inside;
-    if (nd >= 0.4 * (kEdge + kDepth)) f.members.push_back(id);
+    if (nd >= 0.4 * (edge + cap_depth)) f.members.push_back(id);
   }
+  return f;
+}
+
+// Early in a press into a foundation: the same cap at the bottom of a dent
+// that decays as a Pasternak foundation's, n = E K0(r / l) / K0(a / l) with a
+// long l = 15 mm, so the skin beside the touch is only faintly convex
+// (L = n h^2 / l^2, under the convex cut) and fills most of the 40 % region.
+TEST(TouchingMarkers, TheCapsConcaveCoreLeavesOutFaintlyConvexSkinBesideTheTouch) {
+  constexpr double kSigma = 0.0006;
+  const Field f = foundationField(kRadius, kDepth, 1.0, 15.0, kSigma, 5);
   // Skin beyond the markers beside the cap's edge (those, with a neighbour under the cap, are kept by
   // either test: the deformation bends down into the dimple across them).
   int under = 0, beyond = 0;
@@ -168,6 +177,44 @@ TEST(TouchingMarkers, TheCapsConcaveCoreLeavesOutFaintlyConvexSkinBesideTheTouch
   EXPECT_GE(4 * count(convex_only, false), 3 * beyond);  // the convex test keeps most of it
   EXPECT_EQ(count(with_core, false), 0);            // the core's depth leaves it out
   EXPECT_EQ(count(with_core, true), under);         // and keeps the cap
+  // A core that spans an area: the cap of a small contact is the same set.
+  const auto cap = pose::capMarkers(f.field, f.members, kN, kN, kSigma);
+  for (int id : f.members) EXPECT_EQ(cap[static_cast<size_t>(id)], with_core[static_cast<size_t>(id)]) << id;
+}
+
+// A coarse pattern as a small finger's press begins: the cap (radius 6 mm,
+// 0.1 mm deep) holds the single marker at its centre, at the bottom of a
+// dip that decays as a foundation's of l = 4.5 mm (campaign seed 119's
+// regime), and the skin beside the touch fills the region. The concave core
+// is that one marker, too small to span an area (touchingMarkers would not
+// use it); the cap is the touch.
+TEST(TouchingMarkers, ASmallContactsCapIsTheTouchNotTheSkinBesideIt) {
+  constexpr double kSigma = 0.0006;
+  Field f = foundationField(6.0, 0.1, 0.1, 4.5, kSigma, 7);  // cap edge a = 1.10 mm: only the centre under it
+  int under = 0;
+  for (int id : f.members) under += f.under[static_cast<size_t>(id)];
+  ASSERT_EQ(under, 1);
+  ASSERT_GE(f.members.size(), 5u);
+  const auto cap = pose::capMarkers(f.field, f.members, kN, kN, kSigma);
+  int cap_kept = 0, skin_in_cap = 0;
+  for (int id : f.members) {
+    const size_t i = static_cast<size_t>(id);
+    cap_kept += f.under[i] && cap[i];
+    skin_in_cap += !f.under[i] && cap[i];
+  }
+  std::printf("members %zu, under the cap %d; the cap keeps %d of it and %d skin\n", f.members.size(), under,
+              cap_kept, skin_in_cap);
+  EXPECT_EQ(cap_kept, 1);
+  EXPECT_EQ(skin_in_cap, 0);
+
+  // No concave core (a plate pressed flat, with noise): no cap, nothing is found directly.
+  std::mt19937 rng(8);
+  std::normal_distribution<double> noise(0, kSigma);
+  for (auto& u : f.field.displacement) u.z() = -(0.5 + noise(rng));
+  const auto flat = pose::capMarkers(f.field, f.members, kN, kN, kSigma);
+  for (auto c : flat) EXPECT_FALSE(c);
+  // No lattice to judge by: no cap either.
+  for (auto c : pose::capMarkers(f.field, f.members, 0, 0, kSigma)) EXPECT_FALSE(c);
 }
 
 }  // namespace
