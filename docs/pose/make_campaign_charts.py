@@ -26,7 +26,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 HERE = os.path.dirname(os.path.abspath(__file__))
 AXES = ["dx", "dy", "dz", "yaw", "pitch", "roll"]
 ESTIMATORS = [("campaign_baseline.csv", "session 5 (tuned thresholds)", "tab:gray"),
-              ("campaign.csv", "sessions 6-15 (derived thresholds, rolling-aware, thin stick sets, way back)", "tab:blue")]
+              ("campaign.csv", "sessions 6-17 (derived thresholds, rolling-aware, thin stick sets, way back)", "tab:blue")]
 
 
 def rows(path):
@@ -87,10 +87,10 @@ def conditions_chart(data, out_dir):
                 ax.set_xlabel(label)
             if col == 0:
                 ax.set_ylabel("worst translation RMSE (mm)" if kind == "mm" else "worst rotation RMSE (deg)")
-    grid[0][0].legend(fontsize=8, loc="upper left")
+    fig.legend(*grid[0][0].get_legend_handles_labels(), fontsize=9, loc="lower center", ncol=2, markerscale=3)
     fig.suptitle("Pose campaign, field level: each run's worst axis in the linear range against its conditions "
                  "(red: the paper's worst figures)")
-    fig.tight_layout()
+    fig.tight_layout(rect=(0, 0.05, 1, 1))
     fig.savefig(os.path.join(out_dir, "campaign_conditions.png"), dpi=80)
     plt.close(fig)
 
