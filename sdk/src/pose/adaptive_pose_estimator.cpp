@@ -9,6 +9,7 @@
 #include "pose/centroid_motion.hpp"
 #include "pose/contact_cap.hpp"
 #include "pose/onset_reference.hpp"
+#include "pose/stick_set_creep.hpp"
 #include "pose/touching_markers.hpp"
 
 namespace onetip::pose {
@@ -156,6 +157,9 @@ Eigen::Isometry3d AdaptivePoseEstimator::solveIncrement(const contact::ContactFi
       !af.rotation_supported && !slip.empty() &&
       thinStickSetTrusted(evidence.n_stick, !region_developed, settled, options_.min_thin_stick_markers) &&
       stickSlipRotationInformation(stick, slip) >= t_.min_spread_mm * t_.min_spread_mm;
+  evidence.stick_set_creeps = region_developed && !af.rotation_supported && !slip.empty() &&
+                              evidence.n_stick < options_.min_thin_stick_markers &&
+                              slipMarkersOvertake(af.fit.motion, slip, t_.noise_mm, t_.slip_mm);
   step.model = selectModel(evidence, policy);
   if (step.model == PoseModel::kabsch) return af.fit.motion;
   if (step.model == PoseModel::stick_slip) {

@@ -24,7 +24,9 @@
 //  2. The increment dT_k = T_k T_{k-1}^-1 from the model pose/model_selection.hpp picks:
 //       full stick (no slipping marker)      -> Kabsch / Umeyama (rigid_fit.hpp, Eq. 1);
 //       partial slip (Eq. 16 holds)          -> Ceres stick/slip least squares (Eq. 13-15);
-//       Eq. 16 fails (macroscopic slip)      -> motion of the footprint centroid
+//       Eq. 16 fails (macroscopic slip), or on a developed contact a thin
+//       stick set creeps (slip markers overtake it: stick_set_creep.hpp)
+//                                            -> motion of the footprint centroid
 //         (for a contact smaller than min_macro_markers, whose footprint is
 //         too coarse, the mean motion of its markers instead; but while the
 //         finger visibly turns, i.e. the markers' rigid motion tilts it beyond

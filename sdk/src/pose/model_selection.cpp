@@ -17,7 +17,7 @@ std::string_view toString(PoseModel m) noexcept {
 PoseModel selectModel(const ModelEvidence& e, ModelPolicy policy) {
   if (policy == ModelPolicy::centroid_only) return PoseModel::centroid;
   if (policy == ModelPolicy::kabsch_only) return PoseModel::kabsch;
-  if (!e.stick_fit_ok || !stickSlipSolvable(e.n_stick, e.n_slip)) return PoseModel::centroid;
+  if (!e.stick_fit_ok || !stickSlipSolvable(e.n_stick, e.n_slip) || e.stick_set_creeps) return PoseModel::centroid;
   const bool full_stick = e.n_slip == 0 && policy == ModelPolicy::adaptive;
   if (full_stick || !(e.rotation_supported || e.slip_fixes_rotation)) return PoseModel::kabsch;
   return PoseModel::stick_slip;

@@ -3,7 +3,8 @@
 //
 // adaptive policy, in order:
 //   no usable stick fit, or Eq. 16 fails
-//     (3 n_stick + n_slip < 6 or n_stick = 0)          -> centroid (footprint) model;
+//     (3 n_stick + n_slip < 6 or n_stick = 0),
+//     or the stick set creeps (stick_set_creeps)       -> centroid (footprint) model;
 //   no slipping marker, or a stick set that cannot
 //     fix a general rotation, even with the slip
 //     markers' normal residuals (slip_fixes_rotation)  -> Kabsch (Eq. 1; what the set fixes);
@@ -31,6 +32,11 @@ struct ModelEvidence {
   // fix (stickSlipRotationInformation >= min spread^2: some marker acts at
   // the min spread from every axis): Eq. 13-15 can give the whole rotation.
   bool slip_fixes_rotation = false;
+  // On a developed contact, a thin stick set (no general rotation, fewer than
+  // min_thin_stick_markers) that slipping markers overtake
+  // (pose/stick_set_creep.hpp): the finger went further than it says, its
+  // markers slip together, and Eq. 16 holds by the count alone.
+  bool stick_set_creeps = false;
 };
 
 PoseModel selectModel(const ModelEvidence& evidence, ModelPolicy policy);
