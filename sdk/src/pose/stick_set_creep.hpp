@@ -13,9 +13,10 @@
 // threshold means the finger went further than the stick set says: the stick
 // set creeps with it, each marker within the slip threshold of a fit that
 // follows them all, which a label test against that fit cannot see (the
-// shipped sweep_x, rendered: at the end of the +1.5 mm stroke three markers
-// crept 0.013 mm a frame, the centre marker beside them moved the finger's
-// 0.050 mm, was labelled slip against their fit, and 0.2 mm were lost).
+// shipped sweep_x, rendered: at the end of the +1.5 mm stroke the stick set
+// was three markers in a line; the outer two crept 0.013 mm a frame, the
+// middle one still moved the finger's 0.050 mm, was labelled slip against
+// their fit, and 0.2 mm were lost).
 // Only markers the motion carries beyond the floor (three standard deviations
 // of a frame-to-frame displacement, 3 sqrt(2) sigma) give the motion a
 // direction to lead along.
