@@ -1,7 +1,7 @@
 // The issue's accuracy figures end to end: simulator frames rendered at the
 // default image noise, through pipeline::FrameProcessor (corners, tracking,
 // triangulation, contact, stick/slip, pose) against the simulator's ground
-// truth. Press and slide_x at their 30 fps; roll, pitch and twist at 15 fps (the
+// truth. Press, slide_x and sweep_x at their 30 fps; roll, pitch and twist at 15 fps (the
 // same motion in half the frames, to keep the rendering time down).
 #include <gtest/gtest.h>
 
@@ -58,9 +58,11 @@ static void expectRmse(const std::string& name, const FramePredicate& keep, size
 
 class EndToEndTranslation : public ::testing::TestWithParam<std::string> {};
 
-// Issue: translation RMSE <= 0.05 mm per axis over |dx|, |dy| <= 1.5 mm, dz in [0, 3] mm.
+// Issue: translation RMSE <= 0.05 mm per axis over |dx|, |dy| <= 1.5 mm, dz in [0, 3] mm. sweep_x pins
+// the creep test (pose/stick_set_creep.hpp): without it, at the end of the +1.5 mm stroke a stick set of
+// creeping markers carried the estimate and 0.2 mm were lost to the end.
 TEST_P(EndToEndTranslation, RmseWithinRange) { expectRmse(GetParam(), inTranslationRange, 0, 0.05); }
-INSTANTIATE_TEST_SUITE_P(Pose, EndToEndTranslation, ::testing::Values("press", "slide_x"));
+INSTANTIATE_TEST_SUITE_P(Pose, EndToEndTranslation, ::testing::Values("press", "slide_x", "sweep_x"));
 
 class EndToEndRotation : public ::testing::TestWithParam<std::string> {};
 
