@@ -3,6 +3,8 @@
 // known size, against the motion a stick set reports.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "pose/model_selection.hpp"
 #include "pose/stick_set_creep.hpp"
 
