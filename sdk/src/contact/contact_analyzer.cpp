@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
+#include "contact/finger_valleys.hpp"
 #include "contact/footprint_centre.hpp"
 #include "contact/grid_components.hpp"
 #include "contact/surface_normals.hpp"
@@ -17,6 +19,8 @@ void ContactAnalyzerOptions::validate() const {
   if (!(region_fraction > 0 && region_fraction <= 1))
     throw InputError("contact options: region_fraction must be in (0, 1]");
   if (min_region_markers < 1) throw InputError("contact options: min_region_markers must be at least 1");
+  if (!(valley_prominence >= 0 && valley_prominence <= 1))
+    throw InputError("contact options: valley_prominence must be in [0, 1]");
   if (min_valid_markers < 3) throw InputError("contact options: min_valid_markers must be at least 3");
   if (!(min_confidence >= 0 && min_confidence <= 1)) throw InputError("contact options: min_confidence must be in [0, 1]");
 }
@@ -76,13 +80,17 @@ ContactField ContactAnalyzer::analyze(const MarkerField& now, const MarkerField&
   const double cut = options_.region_fraction * out.max_normal_mm;
   out.region_cut_mm = cut;
   std::vector<std::uint8_t> mask(n, 0);
+  std::vector<double> measure(n, std::numeric_limits<double>::quiet_NaN());  // not measured: NaN
   const bool by_modulus = options_.region_measure == RegionMeasure::modulus;
   for (size_t i = 0; i < n; ++i) {
     const Eigen::Vector3d& u = out.displacement[i];
-    mask[i] = out.valid[i] && (by_modulus ? u.norm() : -u.z()) >= cut;
+    if (!out.valid[i]) continue;
+    measure[i] = by_modulus ? u.norm() : -u.z();
+    mask[i] = measure[i] >= cut;
   }
   int count = 0;
-  const std::vector<int> label = labelGridComponents(now.rows, now.cols, mask, &count);
+  const std::vector<int> label = splitAtValleys(now.rows, now.cols, labelGridComponents(now.rows, now.cols, mask, &count),
+                                                measure, options_.valley_prominence, &count);
   std::vector<ContactRegion> regions(static_cast<size_t>(count));
   for (size_t i = 0; i < n; ++i)
     if (label[i] >= 0) regions[static_cast<size_t>(label[i])].markers.push_back(static_cast<int>(i));

@@ -4,7 +4,8 @@
 // on the same grid. Output: a ContactField (see contact_field.hpp for the maths):
 // in contact while max |u_i| > contact_threshold_mm (paper: 0.1 mm); region =
 // markers with |u_i| >= region_fraction * max |u_i.z| (paper: 50%), split into
-// 8-connected components on the grid; components smaller than
+// 8-connected components on the grid and each component at the valleys
+// between two fingers' peaks (finger_valleys.hpp); components smaller than
 // min_region_markers are treated as noise and dropped. The default, 1, keeps
 // the contact rule exact: the pad is in contact whenever its largest
 // deformation exceeds the threshold, also while a fingertip between markers
@@ -44,6 +45,9 @@ struct ContactAnalyzerOptions {
   RegionMeasure region_measure = RegionMeasure::normal;
   double region_fraction = 0.4;       // of the largest normal deformation
   int min_region_markers = 1;         // [1, ...] smaller components are noise
+  double valley_prominence = 0.3;     // [0, 1] a second peak is another finger when the valley towards a deeper
+                                      // one is this fraction of its depth below it (finger_valleys.hpp: between a
+                                      // lone finger's <= 0.01 and two fingers' 0.41-0.60); 1: never split
   int min_valid_markers = 9;          // fewer valid pairs: status too_few_markers
   double min_confidence = 0.2;        // a marker graded below this is not measured (0: use every marker)
   void validate() const;              // throws InputError naming the bad field

@@ -1,26 +1,22 @@
 #include "contact/grid_components.hpp"
 
 #include <algorithm>
-#include <numeric>
 
 namespace onetip::contact {
 
-std::vector<int> labelGridComponents(int rows, int cols, const std::vector<std::uint8_t>& mask,
-                                     int* component_count) {
+std::vector<int> labelGridComponents(int rows, int cols, const std::vector<std::uint8_t>& mask, int* component_count) {
   const int n = rows * cols;
   std::vector<int> label(static_cast<size_t>(n), -1);
-  std::vector<int> sizes, first_ids, stack;
+  std::vector<int> stack;
+  int components = 0;
   for (int seed = 0; seed < n; ++seed) {
     if (!mask[static_cast<size_t>(seed)] || label[static_cast<size_t>(seed)] >= 0) continue;
-    const int comp = static_cast<int>(sizes.size());
-    sizes.push_back(0);
-    first_ids.push_back(seed);
+    const int comp = components++;
     stack.assign(1, seed);
     label[static_cast<size_t>(seed)] = comp;
     while (!stack.empty()) {
       const int id = stack.back();
       stack.pop_back();
-      ++sizes.back();
       const int r = id / cols, c = id % cols;
       for (int dr = -1; dr <= 1; ++dr)
         for (int dc = -1; dc <= 1; ++dc) {
@@ -33,19 +29,31 @@ std::vector<int> labelGridComponents(int rows, int cols, const std::vector<std::
         }
     }
   }
-  std::vector<int> order(sizes.size());
-  std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
-    return sizes[static_cast<size_t>(a)] != sizes[static_cast<size_t>(b)]
-               ? sizes[static_cast<size_t>(a)] > sizes[static_cast<size_t>(b)]
-               : first_ids[static_cast<size_t>(a)] < first_ids[static_cast<size_t>(b)];
+  const int count = rankLabelsBySize(label);
+  if (component_count) *component_count = count;
+  return label;
+}
+
+int rankLabelsBySize(std::vector<int>& label) {
+  const size_t n = label.size();
+  std::vector<int> sizes(n, 0), first_id(n, -1), used;
+  for (size_t i = 0; i < n; ++i) {
+    const int l = label[i];
+    if (l < 0) continue;
+    if (sizes[static_cast<size_t>(l)]++ == 0) {
+      first_id[static_cast<size_t>(l)] = static_cast<int>(i);
+      used.push_back(l);
+    }
+  }
+  std::stable_sort(used.begin(), used.end(), [&](int a, int b) {
+    const size_t ua = static_cast<size_t>(a), ub = static_cast<size_t>(b);
+    return sizes[ua] != sizes[ub] ? sizes[ua] > sizes[ub] : first_id[ua] < first_id[ub];
   });
-  std::vector<int> rank(sizes.size());
-  for (size_t k = 0; k < order.size(); ++k) rank[static_cast<size_t>(order[k])] = static_cast<int>(k);
+  std::vector<int> rank(n, -1);
+  for (size_t k = 0; k < used.size(); ++k) rank[static_cast<size_t>(used[k])] = static_cast<int>(k);
   for (int& l : label)
     if (l >= 0) l = rank[static_cast<size_t>(l)];
-  if (component_count) *component_count = static_cast<int>(sizes.size());
-  return label;
+  return static_cast<int>(used.size());
 }
 
 }  // namespace onetip::contact

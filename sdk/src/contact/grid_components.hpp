@@ -15,4 +15,9 @@ namespace onetip::contact {
 std::vector<int> labelGridComponents(int rows, int cols, const std::vector<std::uint8_t>& mask,
                                      int* component_count);
 
+// Renumbers labels in place (any values in [0, label.size()), -1 for none)
+// from 0 by decreasing size, ties: the label whose first cell comes first.
+// Returns the number of labels.
+int rankLabelsBySize(std::vector<int>& label);
+
 }  // namespace onetip::contact

@@ -51,6 +51,22 @@ TEST(ContactAnalyzer, TwoFingersGiveTwoRegions) {
   EXPECT_GT(cf.regions[1].rest_centroid.x(), 3.5);
 }
 
+TEST(ContactAnalyzer, TwoFingersWhoseImprintsJoinAreStillTwoRegions) {
+  // 6 mm apart: the deformation between them stays above the 40 % cut, so the
+  // markers above it form one connected area (checked below); the valley splits it.
+  const MarkerField rest = synth::flatGrid(17, 17);
+  auto u = [](const Eigen::Vector3d& p) {
+    return Eigen::Vector3d(synth::dimple(1.0, 2.5, -3, 0)(p) + synth::dimple(0.8, 2.5, 3, 0)(p));
+  };
+  EXPECT_GT(-u(Eigen::Vector3d(0, 0, 0)).z(), 0.4);  // the valley is above the cut
+  const contact::ContactField cf = ContactAnalyzer().analyze(synth::deformed(rest, u), rest);
+  ASSERT_EQ(cf.regions.size(), 2u);
+  for (int id : cf.regions[0].markers) EXPECT_LT(rest.position[static_cast<size_t>(id)].x(), 1.3) << id;
+  for (int id : cf.regions[1].markers) EXPECT_GT(rest.position[static_cast<size_t>(id)].x(), -1.3) << id;
+  EXPECT_LT(cf.regions[0].footprint_centre.x(), -2.0);
+  EXPECT_GT(cf.regions[1].footprint_centre.x(), 2.0);
+}
+
 TEST(ContactAnalyzer, BelowTheThresholdThereIsNoContact) {
   const MarkerField rest = synth::flatGrid(17, 17);
   const contact::ContactField cf = ContactAnalyzer().analyze(synth::deformed(rest, synth::dimple(0.09, 2.5)), rest);
