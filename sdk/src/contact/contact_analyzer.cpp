@@ -7,7 +7,6 @@
 
 #include "contact/finger_valleys.hpp"
 #include "contact/footprint_centre.hpp"
-#include "contact/grid_components.hpp"
 #include "contact/surface_normals.hpp"
 #include "core/error.hpp"
 
@@ -77,20 +76,19 @@ ContactField ContactAnalyzer::analyze(const MarkerField& now, const MarkerField&
   }
   if (!(out.max_modulus_mm > options_.contact_threshold_mm)) return out;
 
-  const double cut = options_.region_fraction * out.max_normal_mm;
-  out.region_cut_mm = cut;
-  std::vector<std::uint8_t> mask(n, 0);
-  std::vector<double> measure(n, std::numeric_limits<double>::quiet_NaN());  // not measured: NaN
+  out.region_cut_mm = options_.region_fraction * out.max_normal_mm;
+  std::vector<double> measure(n, std::numeric_limits<double>::quiet_NaN()), normal(n, 0.0);  // NaN: not measured
   const bool by_modulus = options_.region_measure == RegionMeasure::modulus;
   for (size_t i = 0; i < n; ++i) {
-    const Eigen::Vector3d& u = out.displacement[i];
     if (!out.valid[i]) continue;
-    measure[i] = by_modulus ? u.norm() : -u.z();
-    mask[i] = measure[i] >= cut;
+    measure[i] = by_modulus ? out.displacement[i].norm() : -out.displacement[i].z();
+    normal[i] = std::abs(out.displacement[i].z());
   }
   int count = 0;
-  const std::vector<int> label = splitAtValleys(now.rows, now.cols, labelGridComponents(now.rows, now.cols, mask, &count),
-                                                measure, options_.valley_prominence, &count);
+  std::vector<double> cuts;
+  const std::vector<int> label =
+      labelFingerRegions(now.rows, now.cols, measure, normal, options_.contact_threshold_mm, options_.region_fraction,
+                         options_.valley_prominence, cuts, &count);
   std::vector<ContactRegion> regions(static_cast<size_t>(count));
   for (size_t i = 0; i < n; ++i)
     if (label[i] >= 0) regions[static_cast<size_t>(label[i])].markers.push_back(static_cast<int>(i));
@@ -107,7 +105,8 @@ ContactField ContactAnalyzer::analyze(const MarkerField& now, const MarkerField&
       reg.peak_normal_mm = std::max(reg.peak_normal_mm, normal_def.back());
     }
     reg.rest_centroid = rest_sum / static_cast<double>(reg.markers.size());
-    reg.footprint_centre = footprintCentre(positions, normal_def, cut);
+    reg.cut_mm = cuts[static_cast<size_t>(&reg - regions.data())];
+    reg.footprint_centre = footprintCentre(positions, normal_def, reg.cut_mm);
     const int index = static_cast<int>(out.regions.size());
     for (int id : reg.markers) out.region_of[static_cast<size_t>(id)] = index;
     out.regions.push_back(std::move(reg));

@@ -5,7 +5,8 @@
 // in contact while max |u_i| > contact_threshold_mm (paper: 0.1 mm); region =
 // markers with |u_i| >= region_fraction * max |u_i.z| (paper: 50%), split into
 // 8-connected components on the grid and each component at the valleys
-// between two fingers' peaks (finger_valleys.hpp); components smaller than
+// between two fingers' peaks; with several fingers, each finger's region is
+// cut at region_fraction of its own peak (finger_valleys.hpp); regions smaller than
 // min_region_markers are treated as noise and dropped. The default, 1, keeps
 // the contact rule exact: the pad is in contact whenever its largest
 // deformation exceeds the threshold, also while a fingertip between markers

@@ -12,8 +12,10 @@
 // Contact (the paper's Sec. III-C rule): in contact while max_i |u_i| exceeds
 // the contact threshold; the contact region holds the markers whose
 // deformation (normal -u_i.z by default, or the paper's modulus |u_i|) is at
-// least region_fraction * max_i |u_i.z|. Separate regions (two fingers) are
-// the 8-connected components of that set on the marker grid, largest first.
+// least region_fraction * max_i |u_i.z|. With several fingers (peaks of the
+// normal deformation apart by a valley, contact/finger_valleys.hpp) each
+// finger's region is cut at region_fraction of its own peak. Regions are
+// 8-connected on the marker grid, largest first.
 #pragma once
 
 #include <Eigen/Core>
@@ -32,6 +34,7 @@ struct ContactRegion {
   Eigen::Vector3d rest_centroid{0, 0, 0};   // mean rest position of the members (S, mm)
   Eigen::Vector3d footprint_centre{0, 0, 0};  // apex of the normal-deformation cap (footprint_centre.hpp; S, mm)
   double peak_normal_mm = 0;            // largest normal deformation in the region
+  double cut_mm = 0;                    // its finger's cut: region_fraction x that finger's peak |u_i.z| (mm)
 };
 
 struct ContactField {
@@ -39,7 +42,7 @@ struct ContactField {
   bool in_contact = false;
   double max_modulus_mm = 0;            // max |u_i|
   double max_normal_mm = 0;             // max |u_i.z|
-  double region_cut_mm = 0;             // region_fraction * max_normal_mm
+  double region_cut_mm = 0;             // region_fraction * max_normal_mm (the deepest finger's cut)
   int valid_markers = 0;                // markers valid in both now and rest (and confident enough)
   int low_confidence = 0;               // markers measured in now but graded below min_confidence
   std::vector<Eigen::Vector3d> displacement;  // u_i (zero where invalid)
@@ -52,6 +55,11 @@ struct ContactField {
   std::vector<ContactRegion> regions;   // largest first; empty when not in contact
 
   bool inRegion(int id) const { return region_of[static_cast<size_t>(id)] >= 0; }
+  // The cut of the region holding the first of `members` (region_cut_mm when it is in none).
+  double cutOf(const std::vector<int>& members) const {
+    const int r = members.empty() ? -1 : region_of[static_cast<size_t>(members.front())];
+    return r >= 0 ? regions[static_cast<size_t>(r)].cut_mm : region_cut_mm;
+  }
 };
 
 }  // namespace onetip::contact

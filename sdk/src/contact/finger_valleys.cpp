@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <span>
 
 #include "contact/grid_components.hpp"
 
@@ -36,21 +37,22 @@ bool enclosed(int rows, int cols, int id, const std::vector<double>& depth) {
 
 }  // namespace
 
-std::vector<int> splitAtValleys(int rows, int cols, const std::vector<int>& component, const std::vector<double>& depth,
-                                double min_prominence_fraction, int* region_count) {
-  const size_t n = component.size();
+std::vector<int> splitAtValleys(int rows, int cols, const std::vector<std::uint8_t>& mask,
+                                const std::vector<double>& depth, double min_prominence_fraction, int* region_count) {
+  const size_t n = mask.size();
   std::vector<int> order;
   for (size_t i = 0; i < n; ++i)
-    if (component[i] >= 0) order.push_back(static_cast<int>(i));
-  std::stable_sort(order.begin(), order.end(),
-                   [&](int a, int b) { return depth[static_cast<size_t>(a)] > depth[static_cast<size_t>(b)]; });
+    if (mask[i]) order.push_back(static_cast<int>(i));
+  std::sort(order.begin(), order.end(), [&](int a, int b) {  // deepest first; ties: the first cell first
+    const double da = depth[static_cast<size_t>(a)], db = depth[static_cast<size_t>(b)];
+    return da != db ? da > db : a < b;
+  });
   Basins basins(n);
-  std::vector<int> roots;
   for (int id : order) {
     const size_t i = static_cast<size_t>(id);
     const int r = id / cols, c = id % cols;
-    int deepest = -1;  // the deepest taken neighbour
-    roots.clear();
+    int deepest = -1;            // the deepest taken neighbour
+    int roots[8], distinct = 0;  // the basins of the taken neighbours
     for (int dr = -1; dr <= 1; ++dr)
       for (int dc = -1; dc <= 1; ++dc) {
         const int rr = r + dr, cc = c + dc;
@@ -58,19 +60,18 @@ std::vector<int> splitAtValleys(int rows, int cols, const std::vector<int>& comp
         const int j = rr * cols + cc;
         if (basins.parent[static_cast<size_t>(j)] < 0) continue;  // not taken yet (or outside the mask)
         if (deepest < 0 || depth[static_cast<size_t>(j)] > depth[static_cast<size_t>(deepest)]) deepest = j;
-        roots.push_back(basins.root(j));
+        const int root = basins.root(j);
+        if (std::find(roots, roots + distinct, root) == roots + distinct) roots[distinct++] = root;
       }
     if (deepest < 0) {  // a new peak
       basins.parent[i] = id;
       basins.peak[i] = depth[i];
       continue;
     }
-    std::sort(roots.begin(), roots.end());
-    roots.erase(std::unique(roots.begin(), roots.end()), roots.end());
-    const int top = *std::max_element(roots.begin(), roots.end(), [&](int a, int b) {
+    const int top = *std::max_element(roots, roots + distinct, [&](int a, int b) {
       return basins.peak[static_cast<size_t>(a)] < basins.peak[static_cast<size_t>(b)];
     });
-    for (int other : roots) {
+    for (const int other : std::span<const int>(roots, static_cast<size_t>(distinct))) {
       const double peak = basins.peak[static_cast<size_t>(other)];
       const bool apart = enclosed(rows, cols, other, depth) && peak - depth[i] >= min_prominence_fraction * peak;
       if (other != top && !apart) basins.parent[static_cast<size_t>(other)] = top;
@@ -80,6 +81,34 @@ std::vector<int> splitAtValleys(int rows, int cols, const std::vector<int>& comp
   std::vector<int> label(n, -1);
   for (int id : order) label[static_cast<size_t>(id)] = basins.root(id);
   const int count = rankLabelsBySize(label);
+  if (region_count) *region_count = count;
+  return label;
+}
+
+std::vector<int> labelFingerRegions(int rows, int cols, const std::vector<double>& depth,
+                                    const std::vector<double>& normal, double floor, double region_fraction,
+                                    double min_prominence_fraction, std::vector<double>& cuts, int* region_count) {
+  const size_t n = depth.size();
+  double deepest = 0;
+  for (size_t i = 0; i < n; ++i)
+    if (std::isfinite(depth[i])) deepest = std::max(deepest, normal[i]);
+  const double seen = std::min(floor, region_fraction * deepest);
+  std::vector<std::uint8_t> mask(n, 0);
+  for (size_t i = 0; i < n; ++i) mask[i] = std::isfinite(depth[i]) && depth[i] >= seen;
+  int fingers = 0;
+  const std::vector<int> finger = splitAtValleys(rows, cols, mask, depth, min_prominence_fraction, &fingers);
+  std::vector<double> peak(static_cast<size_t>(fingers), 0.0);
+  for (size_t i = 0; i < n; ++i)
+    if (finger[i] >= 0)
+      peak[static_cast<size_t>(finger[i])] = std::max(peak[static_cast<size_t>(finger[i])], normal[i]);
+  // Each finger's pieces above its own cut (cells of different fingers never connect).
+  for (size_t i = 0; i < n; ++i)
+    mask[i] = finger[i] >= 0 && depth[i] >= region_fraction * peak[static_cast<size_t>(finger[i])];
+  int count = 0;
+  const std::vector<int> label = labelGridComponents(rows, cols, mask, finger, &count);
+  cuts.assign(static_cast<size_t>(count), 0.0);
+  for (size_t i = 0; i < n; ++i)
+    if (label[i] >= 0) cuts[static_cast<size_t>(label[i])] = region_fraction * peak[static_cast<size_t>(finger[i])];
   if (region_count) *region_count = count;
   return label;
 }

@@ -32,17 +32,38 @@
 // up to 0.59 at the pattern's border before the enclosure rule.
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 namespace onetip::contact {
 
-// `component`: labels from labelGridComponents (-1 outside the mask);
-// `depth`: n_i per cell (mm; NaN where the marker is not measured). Returns
-// labels where every component is split at its prominent valleys, numbered
-// from 0 by decreasing size as labelGridComponents numbers them. A fraction
-// of 1 or more splits nothing (inside the mask every depth is above the
-// region cut, above zero).
-std::vector<int> splitAtValleys(int rows, int cols, const std::vector<int>& component, const std::vector<double>& depth,
-                                double min_prominence_fraction, int* region_count);
+// `mask`: the cells to label (1) per cell; `depth`: n_i per cell (mm; NaN
+// where the marker is not measured). Returns labels where every 8-connected
+// component of the mask is split at its prominent valleys, numbered from 0 by
+// decreasing size as labelGridComponents numbers them (-1 outside the mask).
+// A fraction of 1 or more splits nothing (inside the mask every depth is
+// above the region cut, above zero).
+std::vector<int> splitAtValleys(int rows, int cols, const std::vector<std::uint8_t>& mask,
+                                const std::vector<double>& depth, double min_prominence_fraction, int* region_count);
+
+// One region per finger, each cut at a fraction of its own peak: the
+// markers whose `depth` (mm, the region measure: normal deformation or
+// modulus) reaches min(floor, region_fraction x the deepest `normal`) are
+// split into fingers (8-connected components, then splitAtValleys on
+// `depth`); finger f keeps its markers whose depth reaches
+// cut_f = region_fraction x P_f, P_f the largest `normal` (|u_i.z|, mm) among
+// its markers, in 8-connected pieces. `floor` is the contact threshold: a
+// finger counts from where its imprint is a touch. With one finger this is
+// the single global cut (region_fraction x the deepest) of before: no
+// single-finger run of the pose campaign changed. A shallow
+// finger beside a deep one keeps its region instead of falling below the deep
+// one's cut, and so does a finger lifting off while another stays, until it
+// no longer touches: its contact ends when the simulator's truth says it
+// does (under one global cut, 1-8 frames early in the campaign's two-finger
+// runs). Returns labels numbered by decreasing size; `cuts` (per label, mm)
+// receives each region's cut.
+std::vector<int> labelFingerRegions(int rows, int cols, const std::vector<double>& depth,
+                                    const std::vector<double>& normal, double floor, double region_fraction,
+                                    double min_prominence_fraction, std::vector<double>& cuts, int* region_count);
 
 }  // namespace onetip::contact

@@ -5,6 +5,11 @@
 namespace onetip::contact {
 
 std::vector<int> labelGridComponents(int rows, int cols, const std::vector<std::uint8_t>& mask, int* component_count) {
+  return labelGridComponents(rows, cols, mask, std::vector<int>(mask.size(), 0), component_count);
+}
+
+std::vector<int> labelGridComponents(int rows, int cols, const std::vector<std::uint8_t>& mask,
+                                     const std::vector<int>& group, int* component_count) {
   const int n = rows * cols;
   std::vector<int> label(static_cast<size_t>(n), -1);
   std::vector<int> stack;
@@ -23,7 +28,9 @@ std::vector<int> labelGridComponents(int rows, int cols, const std::vector<std::
           const int rr = r + dr, cc = c + dc;
           if (rr < 0 || rr >= rows || cc < 0 || cc >= cols) continue;
           const int j = rr * cols + cc;
-          if (!mask[static_cast<size_t>(j)] || label[static_cast<size_t>(j)] >= 0) continue;
+          if (!mask[static_cast<size_t>(j)] || label[static_cast<size_t>(j)] >= 0 ||
+              group[static_cast<size_t>(j)] != group[static_cast<size_t>(id)])
+            continue;
           label[static_cast<size_t>(j)] = comp;
           stack.push_back(j);
         }

@@ -14,6 +14,10 @@ namespace onetip::contact {
 // from 0 by decreasing size (ties: smaller first id first).
 std::vector<int> labelGridComponents(int rows, int cols, const std::vector<std::uint8_t>& mask,
                                      int* component_count);
+// The same, where two masked cells connect only when their `group` (per cell)
+// is the same: the components of each group's cells at once.
+std::vector<int> labelGridComponents(int rows, int cols, const std::vector<std::uint8_t>& mask,
+                                     const std::vector<int>& group, int* component_count);
 
 // Renumbers labels in place (any values in [0, label.size()), -1 for none)
 // from 0 by decreasing size, ties: the label whose first cell comes first.

@@ -306,7 +306,7 @@ std::optional<Eigen::Isometry3d> AdaptivePoseEstimator::restick(const contact::C
 
 void AdaptivePoseEstimator::remember(const contact::ContactField& field, const MarkerField& now,
                                      const contact::ContactRegion& region) {
-  history_.push_back({now, field.displacement, field.region_cut_mm, region.markers, region.footprint_centre, pose_,
+  history_.push_back({now, field.displacement, region.cut_mm, region.markers, region.footprint_centre, pose_,
                       static_cast<double>(region.markers.size())});
   while (static_cast<int>(history_.size()) > t_.window_frames) history_.pop_front();
 }

@@ -62,7 +62,7 @@ ContactCap fitContactCap(const contact::ContactField& field, const std::vector<i
     p.push_back(now.position[i]);
     n.push_back(-field.displacement[i].z());
   }
-  return fitContactCap(p, n, field.region_cut_mm);
+  return fitContactCap(p, n, field.cutOf(members));
 }
 
 }  // namespace onetip::pose

@@ -39,7 +39,7 @@ struct ContactCap {
 
 ContactCap fitContactCap(const std::vector<Eigen::Vector3d>& positions, const std::vector<double>& normal_deformation,
                          double cut_mm);
-// The same over a region's `members` measured in both `field` and `now`, with the field's region cut.
+// The same over a region's `members` measured in both `field` and `now`, with that region's cut.
 ContactCap fitContactCap(const contact::ContactField& field, const std::vector<int>& members, const MarkerField& now);
 
 // rho = H^-1 (w_y, -w_x) (mm, S.xy); zero for an invalid cap.

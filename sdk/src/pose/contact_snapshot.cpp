@@ -28,7 +28,7 @@ CommonFootprints commonFootprints(const ContactSnapshot& before, const contact::
     return out;
   }
   out.before = contact::footprintCentre(p0, n0, before.cut_mm);
-  out.after = contact::footprintCentre(p1, n1, field.region_cut_mm);
+  out.after = contact::footprintCentre(p1, n1, field.cutOf(members));
   return out;
 }
 

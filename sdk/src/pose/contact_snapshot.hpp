@@ -21,7 +21,7 @@ namespace onetip::pose {
 struct ContactSnapshot {
   MarkerField markers;                        // measured (S, mm)
   std::vector<Eigen::Vector3d> displacement;  // u_i from the contact field (mm)
-  double cut_mm = 0;                          // the region cut of the contact field (mm)
+  double cut_mm = 0;                          // the tracked region's cut (ContactRegion::cut_mm, mm)
   std::vector<int> members;                   // of the tracked region
   Eigen::Vector3d footprint{0, 0, 0};         // the tracked region's footprint centre (S, mm)
   Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();  // the estimate T at that frame

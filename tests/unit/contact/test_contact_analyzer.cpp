@@ -1,5 +1,8 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <functional>
+
 #include "contact/contact_analyzer.hpp"
 #include "core/error.hpp"
 #include "synthetic_field.hpp"
@@ -40,24 +43,66 @@ TEST(ContactAnalyzer, PaperRuleUsesTheModulus) {
     EXPECT_EQ(cf.inRegion(i), u(rest.position[static_cast<size_t>(i)]).norm() >= 0.5) << "marker " << i;
 }
 
+namespace {
+
+// Two fingers' dimples (synth::dimple, both `width` wide): `deep` mm at x = `x_deep`, `shallow` mm at x = `x_shallow`
+// (y = `y_shallow`).
+std::function<Eigen::Vector3d(const Eigen::Vector3d&)> twoDimples(double deep, double x_deep, double shallow,
+                                                                  double x_shallow, double width,
+                                                                  double y_shallow = 0) {
+  return [=](const Eigen::Vector3d& p) {
+    return Eigen::Vector3d(synth::dimple(deep, width, x_deep, 0)(p) +
+                           synth::dimple(shallow, width, x_shallow, y_shallow)(p));
+  };
+}
+
+// The region of a field whose rest centroid lies on the side of x = 0 that `side` (-1 or +1) names.
+const contact::ContactRegion& regionOnSide(const contact::ContactField& cf, int side) {
+  return (cf.regions[0].rest_centroid.x() < 0) == (side < 0) ? cf.regions[0] : cf.regions[1];
+}
+
+}  // namespace
+
 TEST(ContactAnalyzer, TwoFingersGiveTwoRegions) {
   const MarkerField rest = synth::flatGrid(17, 17);
-  auto u = [](const Eigen::Vector3d& p) {
-    return Eigen::Vector3d(synth::dimple(1.0, 1.8, -5, 0)(p) + synth::dimple(0.8, 1.8, 5, 1)(p));
-  };
+  const auto u = twoDimples(1.0, -5, 0.8, 5, 1.8, 1);
   const contact::ContactField cf = ContactAnalyzer().analyze(synth::deformed(rest, u), rest);
   ASSERT_EQ(cf.regions.size(), 2u);
-  EXPECT_LT(cf.regions[0].rest_centroid.x(), -3.5);  // the deeper (larger) one first
-  EXPECT_GT(cf.regions[1].rest_centroid.x(), 3.5);
+  // Each finger is cut at 40 % of its own peak: the same share of each imprint, whatever its depth.
+  const contact::ContactRegion &left = regionOnSide(cf, -1), &right = regionOnSide(cf, 1);
+  EXPECT_LT(left.rest_centroid.x(), -3.5);
+  EXPECT_GT(right.rest_centroid.x(), 3.5);
+  EXPECT_NEAR(left.peak_normal_mm, 1.0, 0.02);
+  EXPECT_NEAR(right.peak_normal_mm, 0.8, 0.02);
+  EXPECT_NEAR(left.cut_mm, 0.4 * left.peak_normal_mm, 1e-12);
+  EXPECT_NEAR(right.cut_mm, 0.4 * right.peak_normal_mm, 1e-12);
+  for (int id : right.markers) EXPECT_GE(-u(rest.position[static_cast<size_t>(id)]).z(), 0.4 * right.peak_normal_mm);
+}
+
+TEST(ContactAnalyzer, AShallowFingerBesideADeepOneKeepsItsRegion) {
+  // 1 mm and 0.3 mm deep, 10 mm apart: the shallow imprint lies below 40 % of the deep one's peak, where one
+  // global cut left it no region at all; it is a touch of its own (beyond the 0.1 mm contact threshold).
+  const MarkerField rest = synth::flatGrid(17, 17);
+  const auto u = twoDimples(1.0, -5, 0.3, 5, 1.8);
+  const contact::ContactField cf = ContactAnalyzer().analyze(synth::deformed(rest, u), rest);
+  ASSERT_EQ(cf.regions.size(), 2u);
+  const contact::ContactRegion& shallow = regionOnSide(cf, 1);
+  EXPECT_GT(shallow.rest_centroid.x(), 3.5);
+  EXPECT_NEAR(shallow.peak_normal_mm, 0.3, 0.01);
+  // Independent answer: on the shallow finger's side, the markers at or above 40 % of its peak.
+  for (int i = 0; i < rest.size(); ++i) {
+    const Eigen::Vector3d& p = rest.position[static_cast<size_t>(i)];
+    if (p.x() < 2) continue;
+    const bool expected = -u(p).z() >= 0.4 * shallow.peak_normal_mm;
+    EXPECT_EQ(std::find(shallow.markers.begin(), shallow.markers.end(), i) != shallow.markers.end(), expected) << i;
+  }
 }
 
 TEST(ContactAnalyzer, TwoFingersWhoseImprintsJoinAreStillTwoRegions) {
   // 6 mm apart: the deformation between them stays above the 40 % cut, so the
   // markers above it form one connected area (checked below); the valley splits it.
   const MarkerField rest = synth::flatGrid(17, 17);
-  auto u = [](const Eigen::Vector3d& p) {
-    return Eigen::Vector3d(synth::dimple(1.0, 2.5, -3, 0)(p) + synth::dimple(0.8, 2.5, 3, 0)(p));
-  };
+  const auto u = twoDimples(1.0, -3, 0.8, 3, 2.5);
   EXPECT_GT(-u(Eigen::Vector3d(0, 0, 0)).z(), 0.4);  // the valley is above the cut
   const contact::ContactField cf = ContactAnalyzer().analyze(synth::deformed(rest, u), rest);
   ASSERT_EQ(cf.regions.size(), 2u);

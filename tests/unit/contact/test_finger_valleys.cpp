@@ -1,14 +1,17 @@
-// splitAtValleys on depth fields with a known answer: two dimples whose
-// imprints join above the region cut are two regions, split at the valley;
-// one dimple with ripples is one; the prominence rule at its threshold.
+// splitAtValleys and labelFingerRegions on depth fields with a known answer:
+// two dimples whose imprints join above the region cut are two regions, split
+// at the valley; one dimple with ripples is one; the prominence rule at its
+// threshold; each finger cut at its own peak.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
 #include "contact/finger_valleys.hpp"
 #include "contact/grid_components.hpp"
 
+using onetip::contact::labelFingerRegions;
 using onetip::contact::labelGridComponents;
 using onetip::contact::splitAtValleys;
 
@@ -28,8 +31,7 @@ double gaussian(double depth, double width, double x0, double y0, int id) {
 std::vector<int> regions(const std::vector<double>& depth, double cut, double fraction, int* count) {
   std::vector<std::uint8_t> mask(depth.size());
   for (size_t i = 0; i < depth.size(); ++i) mask[i] = depth[i] >= cut;
-  int components = 0;
-  return splitAtValleys(kSide, kSide, labelGridComponents(kSide, kSide, mask, &components), depth, fraction, count);
+  return splitAtValleys(kSide, kSide, mask, depth, fraction, count);
 }
 
 }  // namespace
@@ -75,12 +77,12 @@ namespace {
 std::vector<int> splitRow(const std::vector<double>& row, double fraction, int* count) {
   const int cols = static_cast<int>(row.size()) + 2;
   std::vector<double> depth(static_cast<size_t>(3 * cols), 0.0);
-  std::vector<int> component(depth.size(), -1);
+  std::vector<std::uint8_t> mask(depth.size(), 0);
   for (size_t c = 0; c < row.size(); ++c) {
     depth[static_cast<size_t>(cols) + 1 + c] = row[c];
-    component[static_cast<size_t>(cols) + 1 + c] = std::isfinite(row[c]) ? 0 : -1;
+    mask[static_cast<size_t>(cols) + 1 + c] = std::isfinite(row[c]) ? 1 : 0;
   }
-  const std::vector<int> label = splitAtValleys(3, cols, component, depth, fraction, count);
+  const std::vector<int> label = splitAtValleys(3, cols, mask, depth, fraction, count);
   return {label.begin() + cols + 1, label.begin() + 2 * cols - 1};
 }
 
@@ -101,9 +103,8 @@ TEST(FingerValleys, APeakIsItsOwnRegionOnlyWhenItsValleyIsDeepEnough) {
 TEST(FingerValleys, APeakOnlyThePatternShowsIsNotAFinger) {
   // The same row, but the lower peak's marker on the pattern's border (its imprint may rise beyond it)...
   const std::vector<double> depth{0.6, 1.0, 0.7, 0.5, 0.8};
-  const std::vector<int> component(depth.size(), 0);
   int count = 0;
-  splitAtValleys(1, 5, component, depth, 0.35, &count);
+  splitAtValleys(1, 5, std::vector<std::uint8_t>(depth.size(), 1), depth, 0.35, &count);
   EXPECT_EQ(count, 1);
   // ...or beside a marker that is not measured.
   const double lost = std::numeric_limits<double>::quiet_NaN();
@@ -116,4 +117,35 @@ TEST(FingerValleys, AFractionOfOneSplitsNothing) {
   const std::vector<int> label = splitRow({0.6, 1.0, 0.1, 0.01, 0.8, 0.6}, 1.0, &count);
   EXPECT_EQ(count, 1);
   for (int l : label) EXPECT_EQ(l, 0);
+}
+
+TEST(FingerValleys, EachFingerIsCutAtItsOwnPeak) {
+  // Dimples 1.0 and 0.3 mm deep, 10 mm apart, both touches (beyond a 0.1 mm floor): the shallow one keeps the
+  // cells at or above 40 % of its own peak, though all lie below 40 % of the deep one's.
+  std::vector<double> depth(kSide * kSide);
+  for (int id = 0; id < kSide * kSide; ++id)
+    depth[static_cast<size_t>(id)] = gaussian(1.0, 1.8, -5, 0, id) + gaussian(0.3, 1.8, 5, 0, id);
+  std::vector<double> cuts;
+  int count = 0;
+  const std::vector<int> label = labelFingerRegions(kSide, kSide, depth, depth, 0.1, 0.4, 0.3, cuts, &count);
+  ASSERT_EQ(count, 2);
+  double deep_peak = 0, shallow_peak = 0;
+  for (int id = 0; id < kSide * kSide; ++id) {
+    double& peak = cellX(id) < 0 ? deep_peak : shallow_peak;
+    peak = std::max(peak, depth[static_cast<size_t>(id)]);
+  }
+  for (int id = 0; id < kSide * kSide; ++id) {
+    const double peak = cellX(id) < 0 ? deep_peak : shallow_peak;
+    const bool in = depth[static_cast<size_t>(id)] >= 0.4 * peak;
+    EXPECT_EQ(label[static_cast<size_t>(id)] >= 0, in) << "cell " << id;
+    if (in) {
+      EXPECT_NEAR(cuts[static_cast<size_t>(label[static_cast<size_t>(id)])], 0.4 * peak, 1e-12) << "cell " << id;
+    }
+  }
+  // One finger: the single cut at 40 % of its peak, the floor notwithstanding.
+  for (int id = 0; id < kSide * kSide; ++id) depth[static_cast<size_t>(id)] = gaussian(0.2, 2.0, 0, 0, id);
+  const std::vector<int> one = labelFingerRegions(kSide, kSide, depth, depth, 0.1, 0.4, 0.3, cuts, &count);
+  ASSERT_EQ(count, 1);
+  for (int id = 0; id < kSide * kSide; ++id)
+    EXPECT_EQ(one[static_cast<size_t>(id)] >= 0, depth[static_cast<size_t>(id)] >= 0.4 * 0.2) << "cell " << id;
 }
