@@ -147,7 +147,6 @@ TEST(FailurePoints, APressOnASmallContactFollowsTheMarkersTheFingerTouches) {
   expectFollowedOver(frames, 21, 45, {0.01, 0.01, 0.01, 0.2, 0.2, 0.2}, true);
 }
 
-
 TEST(FailurePoints, TwoFingersWhoseImprintsJoinAreTrackedApart) {
   // The campaign's random run 38 (half-space model, two fingers on a 19x19 pattern at 44 fps): the tracked
   // finger pitches back from 29 deg while the second one, 6-7 mm away, moves on its own. At frame 224 the
@@ -166,8 +165,9 @@ TEST(FailurePoints, AFingerLiftingBesideAnotherEndsItsContactWhenItStopsTouching
   // the other stays. Under one global cut (40 % of the deeper imprint) the lifting sphere's region vanished a frame
   // before it stopped touching, so the estimate's new contact began a frame before the truth's (frames 63 and 79
   // instead of 64 and 80). It counted that frame's motion of the other sphere, which the truth does not: the
-  // second contact ran 1.0 deg of yaw and roll off to its end, and the first handover frame was 28 deg off in pitch. Cut
-  // at 40 % of its own peak, a finger's region lasts as long as it touches. (Measured: it fails with one cut.)
+  // second contact ran 1.0 deg of yaw and roll off to its end, and the first handover frame was 28 deg off in
+  // pitch. Cut at 40 % of its own peak, a finger's region lasts until its imprint falls below the contact
+  // threshold, here the frame the truth's contact ends. (Measured: it fails with one cut.)
   const auto frames = replayCampaignRun(60);
   int handovers = 0;
   for (size_t k = 1; k < frames.size(); ++k) {
