@@ -26,7 +26,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 HERE = os.path.dirname(os.path.abspath(__file__))
 AXES = ["dx", "dy", "dz", "yaw", "pitch", "roll"]
 ESTIMATORS = [("campaign_baseline.csv", "session 5 (tuned thresholds)", "tab:gray"),
-              ("campaign.csv", "sessions 6-19 (derived thresholds, rolling-aware, thin stick sets, way back, a region per finger)", "tab:blue")]
+              ("campaign.csv", "sessions 6-21 (derived thresholds, rolling-aware, thin stick sets, way back, a region per finger)", "tab:blue")]
 
 
 def rows(path):

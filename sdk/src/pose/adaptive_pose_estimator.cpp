@@ -132,10 +132,12 @@ Eigen::Isometry3d AdaptivePoseEstimator::solveIncrement(const contact::ContactFi
                                             ? std::vector<std::uint8_t>{}
                                             : capMarkers(field, members, now.rows, now.cols, t_.noise_mm);
   std::vector<int> stick_ids = stickSet();
-  AnchoredFit af = fitAnchoredOnTheCap(classifier_, field, stick_ids, cap, now, pose_, t_, options_.rotation_significance);
+  const RotationTests rotation_tests{options_.rotation_significance, options_.thin_turn_significance,
+                                     options_.thin_rigidity_sigmas};
+  AnchoredFit af = fitAnchoredOnTheCap(classifier_, field, stick_ids, cap, now, pose_, t_, rotation_tests);
   if (af.fit.ok && classifier_.classify(now, field.normal, af.fit.motion * pose_) > 0) {
     stick_ids = stickSet();
-    af = fitAnchoredOnTheCap(classifier_, field, stick_ids, cap, now, pose_, t_, options_.rotation_significance);
+    af = fitAnchoredOnTheCap(classifier_, field, stick_ids, cap, now, pose_, t_, rotation_tests);
   }
   std::vector<StickCorrespondence> stick;
   for (int id : stick_ids)

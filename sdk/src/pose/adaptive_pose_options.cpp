@@ -24,6 +24,8 @@ void AdaptivePoseOptions::validate() const {
   requireIn(robust_sigmas, 1, 1000, "robust_sigmas", "");
   requireIn(rotation_significance, 0, 100, "rotation_significance", "");
   requireIn(min_rotation_spread_pitches, 0.05, 5, "min_rotation_spread_pitches", "");
+  requireIn(thin_turn_significance, 0, 100, "thin_turn_significance", "");
+  requireIn(thin_rigidity_sigmas, 0, 100, "thin_rigidity_sigmas", "");
   requireIn(stick_hold_s, 0.001, 10, "stick_hold_s", "s");
   requireIn(stick_hold_min_frames, 1, 1000, "stick_hold_min_frames", "");
   requireIn(min_macro_markers, 1, 10000, "min_macro_markers", "");

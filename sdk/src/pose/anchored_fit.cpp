@@ -5,9 +5,22 @@
 
 namespace onetip::pose {
 
+bool thinSetTurnEvidenced(const RigidFit& fit, const std::vector<Eigen::Vector3d>& from,
+                          const std::vector<Eigen::Vector3d>& to, double noise_mm, const RotationTests& tests) {
+  if (!fit.ok || from.size() < 3) return false;
+  const PlanarExtent extent = planarExtent(from);
+  if (extent.spread.x() <= 0) return false;
+  for (size_t i = 0; i < from.size(); ++i)
+    if ((fit.motion * from[i] - to[i]).norm() > tests.thin_rigidity_sigmas * noise_mm) return false;
+  const Eigen::AngleAxisd turn(fit.motion.linear());
+  const double about_line = std::abs((turn.angle() * turn.axis()).head<2>().dot(extent.major_axis));
+  const double sigma = std::sqrt(2.0) * noise_mm / (extent.spread.x() * std::sqrt(static_cast<double>(from.size())));
+  return about_line >= tests.thin_turn_significance * sigma;
+}
+
 AnchoredFit fitAnchored(const contact::StickSlipClassifier& classifier, const contact::ContactField& field,
                         std::vector<int>& ids, const MarkerField& now, const Eigen::Isometry3d& pose,
-                        const EstimatorThresholds& t, double rotation_significance) {
+                        const EstimatorThresholds& t, const RotationTests& tests) {
   std::vector<Eigen::Vector3d> from, to, relax;
   for (int id : ids) {
     const size_t i = static_cast<size_t>(id);
@@ -36,10 +49,17 @@ AnchoredFit fitAnchored(const contact::StickSlipClassifier& classifier, const co
   const Eigen::Vector2d spread = planarSpread(from);
   const auto significant = [&](const RigidFit& fit, double extent) {
     const double sigma = std::sqrt(2.0) * t.noise_mm / (extent * std::sqrt(static_cast<double>(from.size())));
-    return fit.ok && Eigen::AngleAxisd(fit.motion.linear()).angle() >= rotation_significance * sigma;
+    return fit.ok && Eigen::AngleAxisd(fit.motion.linear()).angle() >= tests.significance * sigma;
   };
   AnchoredFit out;
   if (trimmed.fit.ok && spread.x() >= t.min_spread_mm && significant(trimmed.fit, spread.x())) {
+    out.fit = trimmed.fit;
+    out.rotation_supported = true;
+    return out;
+  }
+  // A set narrower than the min spread: a general rotation when it moves
+  // rigidly and its turn about its own line is significant.
+  if (trimmed.fit.ok && spread.x() < t.min_spread_mm && thinSetTurnEvidenced(trimmed.fit, from, to, t.noise_mm, tests)) {
     out.fit = trimmed.fit;
     out.rotation_supported = true;
     return out;
@@ -58,16 +78,16 @@ AnchoredFit fitAnchored(const contact::StickSlipClassifier& classifier, const co
 AnchoredFit fitAnchoredOnTheCap(const contact::StickSlipClassifier& classifier, const contact::ContactField& field,
                                 std::vector<int>& ids, const std::vector<std::uint8_t>& cap, const MarkerField& now,
                                 const Eigen::Isometry3d& pose, const EstimatorThresholds& t,
-                                double rotation_significance) {
+                                const RotationTests& tests) {
   std::vector<int> on_cap;
   for (int id : ids)
     if (static_cast<size_t>(id) < cap.size() && cap[static_cast<size_t>(id)]) on_cap.push_back(id);
-  const AnchoredFit fit = fitAnchored(classifier, field, ids, now, pose, t, rotation_significance);
+  const AnchoredFit fit = fitAnchored(classifier, field, ids, now, pose, t, tests);
   const auto kept = std::count_if(on_cap.begin(), on_cap.end(),
                                   [&](int id) { return std::find(ids.begin(), ids.end(), id) != ids.end(); });
   if (2 * static_cast<size_t>(kept) >= on_cap.size()) return fit;
   ids = on_cap;
-  return fitAnchored(classifier, field, ids, now, pose, t, rotation_significance);
+  return fitAnchored(classifier, field, ids, now, pose, t, tests);
 }
 
 RigidFit fitConsecutive(const std::vector<int>& members, const MarkerField& before, const MarkerField& now,

@@ -9,11 +9,22 @@
 // until the sticking core looks like the outlier), and robust (Cauchy scale).
 // What the kept set can fix:
 //   smaller principal x-y extent >= min_spread        -> a general rotation;
+//   else a thin set whose turn is evidenced (below)   -> a general rotation;
 //   else larger extent >= min_spread (a line)         -> a rotation about S.z;
 //   else                                               -> a translation only.
-// A fitted rotation smaller than rotation_significance times its noise
+// A fitted rotation smaller than `significance` times its noise
 // sqrt(2) sigma / (extent sqrt(n)) is not applied (a real rotation keeps
 // growing against the anchors until it is significant; noise does not).
+// A thin set's turn is evidenced (thinSetTurnEvidenced) when every kept marker
+// lies within thin_rigidity_sigmas sigma of the fitted motion (it moves as one
+// body, to the noise: a stripe at the edge of a shrinking stick region that
+// begins to slip does not) and the turn's component about the set's own line
+// (its larger principal axis), the one its smaller extent e fixes worst,
+// reaches thin_turn_significance times that component's noise
+// sqrt(2) sigma / (e sqrt(n)). A 2 x 2 block of a 9 x 9 pattern (e = 1.2 mm,
+// half a pitch) rolling 0.46 deg a frame is 23 of those sigmas at 0.0006 mm;
+// the twist's edge stripe (e = 0.52 mm, 4-5 markers) faked 2-3 (docs/pose,
+// sessions 20-21).
 #pragma once
 
 #include <cstdint>
@@ -27,6 +38,17 @@
 
 namespace onetip::pose {
 
+// Noise sigmas (pose/adaptive_pose_options.hpp) a fitted rotation must show before it is applied.
+struct RotationTests {
+  double significance = 1.0;            // any set: the whole turn against its noise
+  double thin_turn_significance = 5.0;  // a thin set: its turn about its own line against that turn's noise
+  double thin_rigidity_sigmas = 3.0;    // a thin set: every kept marker's residual (3-D, mm) within this many sigma
+};
+
+// The thin-set test above for the fit `fit` of `from` onto `to` (S, mm), sigma = noise_mm per axis.
+bool thinSetTurnEvidenced(const RigidFit& fit, const std::vector<Eigen::Vector3d>& from,
+                          const std::vector<Eigen::Vector3d>& to, double noise_mm, const RotationTests& tests);
+
 struct AnchoredFit {
   RigidFit fit;
   bool rotation_supported = false;  // the kept set fixes a general rotation
@@ -35,7 +57,7 @@ struct AnchoredFit {
 // `ids` (stick markers) becomes the kept set.
 AnchoredFit fitAnchored(const contact::StickSlipClassifier& classifier, const contact::ContactField& field,
                         std::vector<int>& ids, const MarkerField& now, const Eigen::Isometry3d& pose,
-                        const EstimatorThresholds& thresholds, double rotation_significance);
+                        const EstimatorThresholds& thresholds, const RotationTests& tests);
 
 // The same, for a contact whose cap (`cap`, per marker id:
 // touching_markers.hpp's capMarkers; empty or all zero: fitAnchored as is)
@@ -51,7 +73,7 @@ AnchoredFit fitAnchored(const contact::StickSlipClassifier& classifier, const co
 AnchoredFit fitAnchoredOnTheCap(const contact::StickSlipClassifier& classifier, const contact::ContactField& field,
                                 std::vector<int>& ids, const std::vector<std::uint8_t>& cap, const MarkerField& now,
                                 const Eigen::Isometry3d& pose, const EstimatorThresholds& thresholds,
-                                double rotation_significance);
+                                const RotationTests& tests);
 
 // Least-squares motion of the valid `members` between two marker fields
 // (robust with `robust_mm` > 0; translation only when asked).

@@ -142,8 +142,11 @@ RigidFit fitRotationAboutZ(const std::vector<Eigen::Vector3d>& from, const std::
   return fit;
 }
 
-Eigen::Vector2d planarSpread(const std::vector<Eigen::Vector3d>& points) {
-  if (points.size() < 2) return Eigen::Vector2d::Zero();
+Eigen::Vector2d planarSpread(const std::vector<Eigen::Vector3d>& points) { return planarExtent(points).spread; }
+
+PlanarExtent planarExtent(const std::vector<Eigen::Vector3d>& points) {
+  PlanarExtent out;
+  if (points.size() < 2) return out;
   Eigen::Vector2d mean = Eigen::Vector2d::Zero();
   for (const auto& p : points) mean += p.head<2>();
   mean /= static_cast<double>(points.size());
@@ -151,7 +154,9 @@ Eigen::Vector2d planarSpread(const std::vector<Eigen::Vector3d>& points) {
   for (const auto& p : points) cov += (p.head<2>() - mean) * (p.head<2>() - mean).transpose();
   cov /= static_cast<double>(points.size());
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(cov);  // ascending eigenvalues
-  return eig.eigenvalues().cwiseMax(0.0).cwiseSqrt();
+  out.spread = eig.eigenvalues().cwiseMax(0.0).cwiseSqrt();
+  out.major_axis = eig.eigenvectors().col(1);
+  return out;
 }
 
 }  // namespace onetip::pose

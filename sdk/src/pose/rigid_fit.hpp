@@ -34,7 +34,8 @@
 // theta = atan2(sum a x b, sum a . b), and t = b_bar - R a_bar.
 // planarSpread: the (smaller, larger) principal RMS extents of the points'
 // x-y projection (mm), i.e. how well they constrain a general rotation and a
-// rotation about S.z.
+// rotation about S.z; planarExtent also gives the direction of the larger
+// (the line a thin set lies along: the axis it fixes a turn about worst).
 #pragma once
 
 #include <Eigen/Geometry>
@@ -67,6 +68,11 @@ TrimmedFit fitRigidMotionTrimmed(const std::vector<Eigen::Vector3d>& from, const
                                  size_t min_kept = 0);
 RigidFit fitTranslation(const std::vector<Eigen::Vector3d>& from, const std::vector<Eigen::Vector3d>& to);
 RigidFit fitRotationAboutZ(const std::vector<Eigen::Vector3d>& from, const std::vector<Eigen::Vector3d>& to);
+struct PlanarExtent {
+  Eigen::Vector2d spread = Eigen::Vector2d::Zero();        // (smaller, larger) RMS extents (mm)
+  Eigen::Vector2d major_axis = Eigen::Vector2d::UnitX();   // unit, S.xy, along the larger
+};
+PlanarExtent planarExtent(const std::vector<Eigen::Vector3d>& points);
 Eigen::Vector2d planarSpread(const std::vector<Eigen::Vector3d>& points);
 
 }  // namespace onetip::pose

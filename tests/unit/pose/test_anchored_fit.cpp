@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "pose/anchored_fit.hpp"
 
@@ -55,7 +56,7 @@ std::vector<std::uint8_t> capOf(const std::vector<int>& ids) {
 
 pose::AnchoredFit fitOnTheCap(Scene& s, std::vector<int>& ids, const std::vector<std::uint8_t>& cap) {
   return pose::fitAnchoredOnTheCap(s.classifier, s.field, ids, cap, s.now, Eigen::Isometry3d::Identity(), s.thresholds,
-                                   3.0);
+                                   {3.0, 5.0, 3.0});
 }
 
 }  // namespace
@@ -89,4 +90,67 @@ TEST(AnchoredFit, ACapMarkerTrimmedAloneLeavesTheFitAsItIs) {
   ASSERT_TRUE(fit.fit.ok);
   EXPECT_NEAR(fit.fit.motion.translation().z(), -0.20, 1e-6);
   EXPECT_EQ(ids.size(), 8u);
+}
+
+namespace {
+
+// The six markers of rows 0 and 1 (a stripe 4 mm long along S.x, RMS extents 1.63 and 1.0 mm), anchored at rest,
+// turned by `tilt_deg` about S.x through their centre; `pushed_mm` more along -S.z on marker 1 (the middle of
+// row 0: no rigid motion takes that up). The min spread
+// (1.5 mm) makes the stripe thin. Its turn about its line has noise sqrt(2) 0.001 / (1.0 sqrt 6) = 0.033 deg.
+Scene stripeTurned(double tilt_deg, double pushed_mm) {
+  Scene s = pressed(0.0, {}, 0.0);
+  s.thresholds.min_spread_mm = 1.5;
+  s.all = {0, 1, 2, 3, 4, 5};
+  const Eigen::Vector3d centre(2.0, 1.0, 0.0);
+  const Eigen::Matrix3d turn = Eigen::AngleAxisd(tilt_deg * M_PI / 180.0, Eigen::Vector3d::UnitX()).toRotationMatrix();
+  for (int id : s.all) {
+    const auto i = static_cast<size_t>(id);
+    s.now.position[i] = centre + turn * (s.rest.position[i] - centre) - Eigen::Vector3d(0, 0, id == 1 ? pushed_mm : 0.0);
+    s.field.displacement[i] = s.now.position[i] - s.rest.position[i];
+  }
+  return s;
+}
+
+double turnAboutX(const pose::AnchoredFit& fit) {
+  const Eigen::AngleAxisd aa(fit.fit.motion.linear());
+  return aa.angle() * aa.axis().x() * 180.0 / M_PI;
+}
+
+}  // namespace
+
+TEST(AnchoredFit, AThinSetThatTurnsRigidlyAboutItsOwnLineFixesAGeneralRotation) {
+  Scene s = stripeTurned(0.5, 0.0);  // 15 sigma
+  std::vector<int> ids = s.all;
+  const pose::AnchoredFit fit = fitOnTheCap(s, ids, {});
+  ASSERT_TRUE(fit.fit.ok);
+  EXPECT_TRUE(fit.rotation_supported);
+  EXPECT_NEAR(turnAboutX(fit), 0.5, 1e-6);
+  EXPECT_EQ(ids.size(), 6u);
+}
+
+TEST(AnchoredFit, AThinSetsTurnWithinItsNoiseIsNotApplied) {
+  // 0.1 deg is 3 of the turn's sigmas, below the 5 asked: the stripe fixes a rotation about S.z only.
+  Scene s = stripeTurned(0.1, 0.0);
+  std::vector<int> ids = s.all;
+  const pose::AnchoredFit fit = fitOnTheCap(s, ids, {});
+  ASSERT_TRUE(fit.fit.ok);
+  EXPECT_FALSE(fit.rotation_supported);
+  EXPECT_NEAR(turnAboutX(fit), 0.0, 1e-9);
+}
+
+TEST(AnchoredFit, AThinSetThatDoesNotMoveAsOneBodyIsNotTrustedToTurn) {
+  // The same 0.5 deg with one marker pushed 0.008 mm further (under the 0.01 mm slip trim, so kept): its
+  // residual exceeds 3 sigma, and the stripe does not fix a general rotation.
+  Scene s = stripeTurned(0.5, 0.008);
+  std::vector<int> ids = s.all;
+  const pose::AnchoredFit fit = fitOnTheCap(s, ids, {});
+  ASSERT_TRUE(fit.fit.ok);
+  EXPECT_EQ(ids.size(), 6u);
+  EXPECT_FALSE(fit.rotation_supported);
+  EXPECT_NEAR(turnAboutX(fit), 0.0, 1e-9);
+  // Rigid again, it does.
+  Scene rigid = stripeTurned(0.5, 0.0);
+  std::vector<int> all = rigid.all;
+  EXPECT_TRUE(fitOnTheCap(rigid, all, {}).rotation_supported);
 }
