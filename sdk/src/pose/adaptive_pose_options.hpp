@@ -50,8 +50,8 @@ struct AdaptivePoseOptions {
   // [0, 100] noise sigmas: a stick set narrower than the min spread still fixes a general rotation when its
   // turn about its own line reaches this many sigmas of that turn's noise and it moves rigidly to within
   // thin_rigidity_sigmas (pose/anchored_fit.hpp; session 21: 300 field runs median dx 0.116 -> 0.107 mm,
-  // pitch 0.91 -> 0.85 deg at 5 and 3; at 3 and 3 a contact on one marker is followed late, at 5 and 4 a
-  // plate pressed edge first tilts by 0.7 deg RMS)
+  // pitch 0.91 -> 0.85 deg at 5 and 3; at 3 and 3 FailurePoints.AContactBeginsWhenOneMarkerPassesTheThreshold
+  // fails, at 5 and 4 a plate pressed edge first is read 0.7 deg RMS off in pitch)
   double thin_turn_significance = 5.0;
   double thin_rigidity_sigmas = 3.0;          // [0, 100]
   double stick_hold_s = 0.33;                 // [0.001, 10] s
