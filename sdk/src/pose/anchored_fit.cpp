@@ -6,10 +6,9 @@
 namespace onetip::pose {
 
 bool thinSetTurnEvidenced(const RigidFit& fit, const std::vector<Eigen::Vector3d>& from,
-                          const std::vector<Eigen::Vector3d>& to, double noise_mm, const RotationTests& tests) {
-  if (!fit.ok || from.size() < 3) return false;
-  const PlanarExtent extent = planarExtent(from);
-  if (extent.spread.x() <= 0) return false;
+                          const std::vector<Eigen::Vector3d>& to, const PlanarExtent& extent, double noise_mm,
+                          const RotationTests& tests) {
+  if (!fit.ok || from.size() < 3 || extent.spread.x() <= 0) return false;
   for (size_t i = 0; i < from.size(); ++i)
     if ((fit.motion * from[i] - to[i]).norm() > tests.thin_rigidity_sigmas * noise_mm) return false;
   const Eigen::AngleAxisd turn(fit.motion.linear());
@@ -46,9 +45,10 @@ AnchoredFit fitAnchored(const contact::StickSlipClassifier& classifier, const co
     to.resize(kept);
     ids.resize(kept);
   }
-  const Eigen::Vector2d spread = planarSpread(from);
-  const auto significant = [&](const RigidFit& fit, double extent) {
-    const double sigma = std::sqrt(2.0) * t.noise_mm / (extent * std::sqrt(static_cast<double>(from.size())));
+  const PlanarExtent extent = planarExtent(from);
+  const Eigen::Vector2d& spread = extent.spread;
+  const auto significant = [&](const RigidFit& fit, double lever) {
+    const double sigma = std::sqrt(2.0) * t.noise_mm / (lever * std::sqrt(static_cast<double>(from.size())));
     return fit.ok && Eigen::AngleAxisd(fit.motion.linear()).angle() >= tests.significance * sigma;
   };
   AnchoredFit out;
@@ -59,7 +59,8 @@ AnchoredFit fitAnchored(const contact::StickSlipClassifier& classifier, const co
   }
   // A set narrower than the min spread: a general rotation when it moves
   // rigidly and its turn about its own line is significant.
-  if (trimmed.fit.ok && spread.x() < t.min_spread_mm && thinSetTurnEvidenced(trimmed.fit, from, to, t.noise_mm, tests)) {
+  if (trimmed.fit.ok && spread.x() < t.min_spread_mm &&
+      thinSetTurnEvidenced(trimmed.fit, from, to, extent, t.noise_mm, tests)) {
     out.fit = trimmed.fit;
     out.rotation_supported = true;
     return out;

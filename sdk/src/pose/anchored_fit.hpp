@@ -21,10 +21,10 @@
 // begins to slip does not) and the turn's component about the set's own line
 // (its larger principal axis), the one its smaller extent e fixes worst,
 // reaches thin_turn_significance times that component's noise
-// sqrt(2) sigma / (e sqrt(n)). A 2 x 2 block of a 9 x 9 pattern (e = 1.2 mm,
-// half a pitch) rolling 0.46 deg a frame is 23 of those sigmas at 0.0006 mm;
-// the twist's edge stripe (e = 0.52 mm, 4-5 markers) faked 2-3 (docs/pose,
-// sessions 20-21).
+// sqrt(2) sigma / (e sqrt(n)). By that formula, at 0.0006 mm, a 2 x 2 block of
+// a 9 x 9 pattern (e = 1.2 mm, half a pitch) rolling 0.46 deg a frame is 23
+// of those sigmas, and the 0.1-0.15 deg the twist's edge stripe faked (e =
+// 0.52 mm, 4-5 markers; docs/pose, session 20) 2-3.
 #pragma once
 
 #include <cstdint>
@@ -45,9 +45,11 @@ struct RotationTests {
   double thin_rigidity_sigmas = 3.0;    // a thin set: every kept marker's residual (3-D, mm) within this many sigma
 };
 
-// The thin-set test above for the fit `fit` of `from` onto `to` (S, mm), sigma = noise_mm per axis.
+// The thin-set test above for the fit `fit` of `from` onto `to` (S, mm), `extent` = planarExtent(from),
+// sigma = noise_mm per axis.
 bool thinSetTurnEvidenced(const RigidFit& fit, const std::vector<Eigen::Vector3d>& from,
-                          const std::vector<Eigen::Vector3d>& to, double noise_mm, const RotationTests& tests);
+                          const std::vector<Eigen::Vector3d>& to, const PlanarExtent& extent, double noise_mm,
+                          const RotationTests& tests);
 
 struct AnchoredFit {
   RigidFit fit;

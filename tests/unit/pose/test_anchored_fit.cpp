@@ -96,8 +96,7 @@ namespace {
 
 // The six markers of rows 0 and 1 (a stripe 4 mm long along S.x, RMS extents 1.63 and 1.0 mm), anchored at rest,
 // turned by `tilt_deg` about S.x through their centre; `pushed_mm` more along -S.z on marker 1 (the middle of
-// row 0: no rigid motion takes that up). The min spread
-// (1.5 mm) makes the stripe thin. Its turn about its line has noise sqrt(2) 0.001 / (1.0 sqrt 6) = 0.033 deg.
+// row 0: no rigid motion takes that up). The min spread (1.5 mm) makes the stripe thin. Its turn about its line has noise sqrt(2) 0.001 / (1.0 sqrt 6) = 0.033 deg.
 Scene stripeTurned(double tilt_deg, double pushed_mm) {
   Scene s = pressed(0.0, {}, 0.0);
   s.thresholds.min_spread_mm = 1.5;
@@ -106,7 +105,8 @@ Scene stripeTurned(double tilt_deg, double pushed_mm) {
   const Eigen::Matrix3d turn = Eigen::AngleAxisd(tilt_deg * M_PI / 180.0, Eigen::Vector3d::UnitX()).toRotationMatrix();
   for (int id : s.all) {
     const auto i = static_cast<size_t>(id);
-    s.now.position[i] = centre + turn * (s.rest.position[i] - centre) - Eigen::Vector3d(0, 0, id == 1 ? pushed_mm : 0.0);
+    const Eigen::Vector3d push(0, 0, id == 1 ? pushed_mm : 0.0);
+    s.now.position[i] = centre + turn * (s.rest.position[i] - centre) - push;
     s.field.displacement[i] = s.now.position[i] - s.rest.position[i];
   }
   return s;

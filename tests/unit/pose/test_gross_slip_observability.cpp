@@ -19,7 +19,9 @@
 // detail. The estimator here does not (docs/pose, session 21).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "sim/simulator.hpp"
 
@@ -29,7 +31,7 @@ using namespace onetip::sim;
 namespace {
 
 constexpr double kRadiusMm = 8.0, kDepthMm = 1.0, kSpeedMmS = 4.0;
-constexpr double kSlideStart = 0.6, kSlideEnd = 2.1;    // s; the slide runs 4 mm
+constexpr double kSlideStart = 0.6, kSlideEnd = 2.1;    // s; the slide runs 6 mm
 constexpr double kRollStart = 1.1;                      // s; 2 mm into the slide (gross slip by then, asserted)
 
 // Finger B's roll (deg) at time t: R w = v / 2 from kRollStart on.
@@ -51,7 +53,8 @@ Scenario slide(ContactModelKind model, bool rolls) {
                       {0.5, 0, 0, kDepthMm, 0, 0, 0},
                       {kSlideStart, 0, 0, kDepthMm, 0, 0, 0},
                       {kRollStart, x_at_roll, 0, kDepthMm, 0, 0, 0},
-                      {kSlideEnd, kSpeedMmS * (kSlideEnd - kSlideStart), 0, kDepthMm, 0, 0, rolls ? rollDeg(kSlideEnd) : 0}};
+                      {kSlideEnd, kSpeedMmS * (kSlideEnd - kSlideStart), 0, kDepthMm, 0, 0,
+                       rolls ? rollDeg(kSlideEnd) : 0}};
   sc.indenters = {finger};
   return sc;
 }
@@ -80,7 +83,8 @@ TEST(GrossSlipObservability, ATurnWhileTheWholeContactSlidesLeavesNoTraceThatGro
       }
       ++rolling;
       slipping += fa.state == ContactState::slip && fb.state == ContactState::slip;
-      (fa.t <= mid ? gap_early : gap_late) = std::max(fa.t <= mid ? gap_early : gap_late, gap);
+      double& half = fa.t <= mid ? gap_early : gap_late;
+      half = std::max(half, gap);
       roll_gap = std::abs(fb.input.roll - fa.input.roll);
     }
     ASSERT_TRUE(slid_before_roll) << "the contact must slide as a whole before B starts to roll";
