@@ -4,7 +4,7 @@
 set -euo pipefail
 
 packages=(
-  build-essential cmake pkg-config git
+  build-essential cmake pkg-config git ccache  # ccache: the compiler cache of every build in .ci/ (.ci/build-env.sh)
   libopencv-dev libeigen3-dev libceres-dev libpcl-dev
   libturbojpeg0-dev libv4l-dev linux-libc-dev
   libgtest-dev libgmock-dev libbenchmark-dev

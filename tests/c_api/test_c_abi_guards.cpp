@@ -10,10 +10,11 @@
 #include <thread>
 
 #include "onetip_c.h"
+#include "test_paths.hpp"
 
 namespace {
 
-const std::string kSource = std::string("sim:") + ONETIP_SOURCE_DIR + "/samples/scenarios/press.yaml";
+const std::string kSource = std::string("sim:") + onetip::test::sourceDir() + "/samples/scenarios/press.yaml";
 
 onetip_sensor* makeSensor() {
   onetip_error err;

@@ -19,6 +19,7 @@
 #include "child_process.hpp"
 #include "scratch_dir.hpp"
 #include "veth_namespaces.hpp"
+#include "test_paths.hpp"
 
 using onetip::test_support::ChildProcess;
 using onetip::test_support::ScratchDir;
@@ -26,7 +27,7 @@ using onetip::test_support::VethNamespaces;
 
 namespace {
 
-const std::string kScenario = std::string(ONETIP_SOURCE_DIR) + "/samples/scenarios/demo_touch.yaml";
+const std::string kScenario = std::string(onetip::test::sourceDir()) + "/samples/scenarios/demo_touch.yaml";
 constexpr double kFps = 30.0;  // demo_touch.yaml
 
 std::vector<std::vector<std::string>> readCsv(const std::string& path) {
@@ -92,7 +93,7 @@ std::string recorderAsanOptions() {
 class RosInterop : public ::testing::Test {
  protected:
   void SetUp() override {
-    const std::string cmd = std::string(ONETIP_CLI) + " process --input sim:" + kScenario + " --out " +
+    const std::string cmd = std::string(onetip::test::cliPath()) + " process --input sim:" + kScenario + " --out " +
                             dir_.file("pose.csv") + " --markers " + dir_.file("markers.csv") + " --quiet";
     ChildProcess process(cmd, dir_.file("process.log"));
     ASSERT_EQ(process.wait(180), 0) << process.log();
@@ -116,7 +117,7 @@ class RosInterop : public ::testing::Test {
     ChildProcess recorder(recorder_prefix + recorderAsanOptions() + ROS_TOPIC_RECORDER + " --domain " + domain + " --namespace " + ns + " " +
                               recorder_net + " --out " + out + " --duration 120 --idle 3",
                           dir_.file("recorder.log"));
-    ChildProcess publisher(publisher_prefix + ONETIP_CLI + " publish --input sim:" + kScenario + " --options " +
+    ChildProcess publisher(publisher_prefix + onetip::test::cliPath() + " publish --input sim:" + kScenario + " --options " +
                                dir_.file("options.yaml") + " --domain " + domain + " --namespace " + ns + " " +
                                publisher_net + " --wait-subscribers 20",
                            dir_.file("publisher.log"));

@@ -27,6 +27,7 @@
 #include "haptics/tactile_dataset.hpp"
 #include "maestro_emulator.hpp"
 #include "scratch_dir.hpp"
+#include "test_paths.hpp"
 
 namespace {
 
@@ -64,7 +65,7 @@ class TeleopOverDds : public ::testing::Test {
   }
 
   std::string teleopCommand(const std::string& port, int stale_ms, double duration_s) const {
-    return std::string(ONETIP_CLI) + " teleop --dataset " + dir_.file("dataset.csv") + " --port " + port +
+    return std::string(onetip::test::cliPath()) + " teleop --dataset " + dir_.file("dataset.csv") + " --port " + port +
            " --domain " + std::to_string(net_.domain) + " --namespace " + net_.ros_namespace +
            " --interface lo --peer 127.0.0.1 --stale-ms " + std::to_string(stale_ms) + " --duration " +
            std::to_string(duration_s);

@@ -14,6 +14,7 @@
 #include <sstream>
 #include <string>
 #include <thread>
+#include "test_paths.hpp"
 
 namespace onetip::test_support {
 
@@ -32,13 +33,13 @@ inline std::string readText(const std::string& path) {
 
 inline int exitCodeOf(int status) { return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status); }
 
-// Runs `ONETIP_CLI args` through /bin/sh (stdout discarded, stderr to err_file).
+// Runs `onetip::test::cliPath() args` through /bin/sh (stdout discarded, stderr to err_file).
 // When `signal_when` is given, polls it every 20 ms and sends `sig` once it
 // returns true (then waits); gives up on signalling after 60 s.
 inline CliRun runCli(const std::string& args, const std::string& err_file,
                      const std::function<bool()>& signal_when = {}, int sig = SIGINT) {
   CliRun r;
-  const std::string cmd = std::string("exec ") + ONETIP_CLI + " " + args + " >/dev/null 2>" + err_file;
+  const std::string cmd = std::string("exec ") + onetip::test::cliPath() + " " + args + " >/dev/null 2>" + err_file;
   const pid_t pid = ::fork();
   if (pid == 0) {
     ::execl("/bin/sh", "sh", "-c", cmd.c_str(), static_cast<char*>(nullptr));

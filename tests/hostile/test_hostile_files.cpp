@@ -11,6 +11,7 @@
 #include "cli_runner.hpp"
 #include "core/csv_table.hpp"
 #include "scratch_dir.hpp"
+#include "test_paths.hpp"
 
 namespace {
 
@@ -18,7 +19,7 @@ using namespace onetip;
 using namespace onetip::test_support;
 namespace fs = std::filesystem;
 
-const fs::path kSource(ONETIP_SOURCE_DIR);
+const fs::path kSource(onetip::test::sourceDir());
 const fs::path kCorpus = kSource / "tests/hostile/corpus";
 const std::string kPress = (kSource / "samples/scenarios/press.yaml").string();
 

@@ -9,6 +9,7 @@
 #include "cli_runner.hpp"
 #include "core/csv_table.hpp"
 #include "scratch_dir.hpp"
+#include "test_paths.hpp"
 
 namespace {
 
@@ -16,7 +17,7 @@ using namespace onetip;
 using namespace onetip::test_support;
 namespace fs = std::filesystem;
 
-const fs::path kSource(ONETIP_SOURCE_DIR);
+const fs::path kSource(onetip::test::sourceDir());
 const std::string kDemo = (kSource / "samples/scenarios/demo_touch.yaml").string();  // 121 frames, ~4 s to render
 
 // Frame numbers 0, 1, 2, ... with no gap and no repeat, and the CONVENTIONS header.

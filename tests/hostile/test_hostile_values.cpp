@@ -12,6 +12,7 @@
 #include "cli_runner.hpp"
 #include "haptics/dataset_binary.hpp"
 #include "scratch_dir.hpp"
+#include "test_paths.hpp"
 
 namespace {
 
@@ -19,7 +20,7 @@ using namespace onetip;
 using namespace onetip::test_support;
 namespace fs = std::filesystem;
 
-const fs::path kSource(ONETIP_SOURCE_DIR);
+const fs::path kSource(onetip::test::sourceDir());
 const std::string kPress = (kSource / "samples/scenarios/press.yaml").string();
 
 void expectRefused(const CliRun& r, const std::string& mentions) {

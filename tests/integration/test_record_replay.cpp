@@ -11,14 +11,15 @@
 
 #include "core/csv_table.hpp"
 #include "scratch_dir.hpp"
+#include "test_paths.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
-const fs::path kSource(ONETIP_SOURCE_DIR);
+const fs::path kSource(onetip::test::sourceDir());
 
 int run(const std::string& args) {
-  return std::system((std::string(ONETIP_CLI) + " " + args + " >/dev/null 2>&1").c_str());
+  return std::system((std::string(onetip::test::cliPath()) + " " + args + " >/dev/null 2>&1").c_str());
 }
 
 std::string readAll(const fs::path& p) {

@@ -15,13 +15,14 @@
 #include "sim/ground_truth_writer.hpp"
 #include "sim/simulator.hpp"
 #include "scratch_dir.hpp"
+#include "test_paths.hpp"
 
 using namespace onetip;
 namespace fs = std::filesystem;
 
 namespace {
-const fs::path kSource(ONETIP_SOURCE_DIR);
-const fs::path kReal = fs::path(ONETIP_TEST_DATA_DIR) / "real" / "opencv_stereo_9x6";
+const fs::path kSource(onetip::test::sourceDir());
+const fs::path kReal = fs::path(onetip::test::testDataDir()) / "real" / "opencv_stereo_9x6";
 
 int run(const std::string& cmd) { return std::system((cmd + " >/dev/null 2>&1").c_str()); }
 
@@ -82,7 +83,7 @@ TEST(VisionEndToEnd, MarkersMatchTheTruthWithTheTrueCalibration) {
 TEST(VisionEndToEnd, MarkersMatchTheTruthWithTheCalibrationOnetipCalibrateMade) {
   const test_support::ScratchDir scratch("onetip-e2e");
   const fs::path dir = scratch.path();
-  const std::string cli = ONETIP_CLI;
+  const std::string cli = onetip::test::cliPath();
   ASSERT_EQ(run(cli + " sim --quiet --scenario " + (kSource / "samples/scenarios/calibration.yaml").string() +
                 " --out " + (dir / "scene").string()),
             0);
@@ -112,7 +113,7 @@ namespace {
 // the 54 inner corners is found and triangulated, neighbour spacing within
 // 0.5% of a square, the board flat.
 void expectWholeBoards(const std::string& calib, const std::string& label) {
-  const std::string cli = ONETIP_CLI;
+  const std::string cli = onetip::test::cliPath();
   const std::string pattern = (kReal / "reference" / "pattern_9x6_nominal25mm.yaml").string();
   const double square = 25.0;
   for (int pair = 1; pair <= 9; ++pair) {
@@ -163,7 +164,7 @@ TEST(VisionEndToEnd, RealPhotosThroughOnetipProcessReproduceTheBoard) {
 TEST(VisionEndToEnd, RealPhotosWithTheCalibrationOnetipCalibrateMadeFindEveryCorner) {
   const test_support::ScratchDir scratch("onetip-e2e-calib");
   const std::string calib = (scratch.path() / "calib.yaml").string();
-  ASSERT_EQ(run(std::string(ONETIP_CLI) + " calibrate --pattern " +
+  ASSERT_EQ(run(std::string(onetip::test::cliPath()) + " calibrate --pattern " +
                 (kReal / "reference" / "pattern_9x6_nominal25mm.yaml").string() + " --input " + (kReal / "sbs").string() +
                 " --out " + calib),
             0);
@@ -173,7 +174,7 @@ TEST(VisionEndToEnd, RealPhotosWithTheCalibrationOnetipCalibrateMadeFindEveryCor
 TEST(VisionEndToEnd, BadFramesAreSkippedAndCountedAndTheStreamGoesOn) {
   const test_support::ScratchDir scratch("onetip-e2e");
   const fs::path dir = scratch.path();
-  const std::string cli = ONETIP_CLI;
+  const std::string cli = onetip::test::cliPath();
   ASSERT_EQ(run(cli + " sim --quiet --frames 6 --scenario " + (kSource / "samples/scenarios/press.yaml").string() +
                 " --out " + (dir / "sim").string()),
             0);

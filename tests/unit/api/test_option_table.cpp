@@ -19,6 +19,7 @@
 #include "onetip/error.hpp"
 #include "pipeline/options_io.hpp"
 #include "scratch_dir.hpp"
+#include "test_paths.hpp"
 
 namespace onetip {
 namespace {
@@ -191,7 +192,7 @@ std::string docsRow(const OptionInfo& row) {
 }
 
 TEST(OptionTable, TheDocsTableIsTheHeadersRowForRow) {
-  std::ifstream docs(ONETIP_SOURCE_DIR "/docs/reference.md");
+  std::ifstream docs(std::string(onetip::test::sourceDir()) + "/docs/reference.md");
   ASSERT_TRUE(docs.good());
   std::vector<std::string> lines;
   bool in_table = false;

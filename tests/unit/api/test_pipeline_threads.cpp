@@ -12,6 +12,7 @@
 #include "pipeline/pipeline.hpp"
 #include "scripted_source.hpp"
 #include "sim/simulator.hpp"
+#include "test_paths.hpp"
 
 namespace onetip::pipeline {
 namespace {
@@ -27,7 +28,7 @@ struct Rig {
 
 const Rig& rig() {
   static const Rig r = [] {
-    sim::Simulator s(sim::loadScenario(ONETIP_SOURCE_DIR "/samples/scenarios/press.yaml"));
+    sim::Simulator s(sim::loadScenario(std::string(onetip::test::sourceDir()) + "/samples/scenarios/press.yaml"));
     Rig out{s.calibration(), s.pattern(), {}};
     out.blank = cv::Mat(out.calib.image_height, out.calib.image_width, CV_8UC1, cv::Scalar(128));
     return out;

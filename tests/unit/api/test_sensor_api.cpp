@@ -12,11 +12,12 @@
 #include "onetip/onetip.hpp"
 #include "pipeline/frame_processor.hpp"
 #include "sim/sim_frame_source.hpp"
+#include "test_paths.hpp"
 
 namespace onetip {
 namespace {
 
-const std::string kScenario = ONETIP_SOURCE_DIR "/samples/scenarios/press.yaml";
+const std::string kScenario = std::string(onetip::test::sourceDir()) + "/samples/scenarios/press.yaml";
 
 std::string tempPath(const std::string& name) {
   return (std::filesystem::temp_directory_path() / ("onetip_api_" + std::to_string(::getpid()) + "_" + name)).string();
@@ -157,7 +158,7 @@ TEST(SensorApi, BadInputAndWrongCallOrderGiveErrorsOfTheRightKind) {
   };
   EXPECT_EQ(kindOf([] { Sensor s(SensorConfig("sim:/no/such.yaml", "", "", "")); }), static_cast<int>(ErrorKind::input));
   EXPECT_EQ(kindOf([] { Sensor s(SensorConfig("", "", "", "")); }), static_cast<int>(ErrorKind::input));
-  EXPECT_EQ(kindOf([] { Sensor s(SensorConfig(ONETIP_SOURCE_DIR "/samples/scenarios", "", "", "")); }),
+  EXPECT_EQ(kindOf([] { Sensor s(SensorConfig(std::string(onetip::test::sourceDir()) + "/samples/scenarios", "", "", "")); }),
             static_cast<int>(ErrorKind::input));  // not a sim: source: calibration needed
   EXPECT_EQ(kindOf([] { Sensor s(SensorConfig("sim:" + kScenario, "/no/calib.yaml", "", "")); }),
             static_cast<int>(ErrorKind::input));  // calibration without pattern

@@ -17,13 +17,14 @@
 #include <thread>
 
 #include "onetip/onetip.hpp"
+#include "test_paths.hpp"
 
 extern char** environ;
 
 namespace onetip {
 namespace {
 
-const std::string kScenario = ONETIP_SOURCE_DIR "/samples/scenarios/press.yaml";
+const std::string kScenario = std::string(onetip::test::sourceDir()) + "/samples/scenarios/press.yaml";
 using Axes = std::array<std::int32_t, 6>;
 
 std::string tempPath(const std::string& name) {
@@ -33,13 +34,13 @@ std::string tempPath(const std::string& name) {
 
 // Runs `onetip ARGS...` in the background.
 pid_t spawnCli(const std::vector<std::string>& args) {
-  std::vector<std::string> all{ONETIP_CLI};
+  std::vector<std::string> all{onetip::test::cliPath()};
   all.insert(all.end(), args.begin(), args.end());
   std::vector<char*> argv;
   for (auto& a : all) argv.push_back(a.data());
   argv.push_back(nullptr);
   pid_t pid = -1;
-  EXPECT_EQ(posix_spawn(&pid, ONETIP_CLI, nullptr, nullptr, argv.data(), environ), 0);
+  EXPECT_EQ(posix_spawn(&pid, onetip::test::cliPath(), nullptr, nullptr, argv.data(), environ), 0);
   return pid;
 }
 

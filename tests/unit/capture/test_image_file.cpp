@@ -12,6 +12,7 @@
 #include "capture/image_file.hpp"
 #include "input_error_of.hpp"
 #include "scratch_dir.hpp"
+#include "test_paths.hpp"
 
 namespace {
 
@@ -19,7 +20,7 @@ using namespace onetip;
 using namespace onetip::capture;
 namespace fs = std::filesystem;
 
-const fs::path kCorpus = fs::path(ONETIP_SOURCE_DIR) / "tests/hostile/corpus";
+const fs::path kCorpus = fs::path(onetip::test::sourceDir()) / "tests/hostile/corpus";
 
 cv::Mat texture(cv::Size size) {
   cv::Mat m(size, CV_8UC1);

@@ -13,6 +13,7 @@
 #include "core/pattern.hpp"
 #include "scratch_dir.hpp"
 #include "input_error_of.hpp"
+#include "test_paths.hpp"
 
 using namespace onetip;
 namespace fs = std::filesystem;
@@ -27,7 +28,7 @@ std::string readText(const fs::path& p) {
 }  // namespace
 
 TEST(Files, ReadsTheReferenceCalibrationOfTheRealPhotos) {
-  const std::string path = std::string(ONETIP_TEST_DATA_DIR) +
+  const std::string path = std::string(onetip::test::testDataDir()) +
                            "/real/opencv_stereo_9x6/reference/reference_calib_sbs_pairs01-09.yaml";
   const StereoCalibration c = loadCalibration(path);
   EXPECT_EQ(c.image_width, 1280);

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "maestro_emulator.hpp"
+#include "test_paths.hpp"
 
 namespace onetip::devices {
 namespace {
@@ -18,7 +19,7 @@ struct CliRun {
 
 CliRun runCli(const std::string& args) {
   CliRun r{0, {}};
-  FILE* p = ::popen((std::string(ONETIP_CLI) + " servo " + args + " 2>&1").c_str(), "r");
+  FILE* p = ::popen((std::string(onetip::test::cliPath()) + " servo " + args + " 2>&1").c_str(), "r");
   std::array<char, 256> buf{};
   while (std::fgets(buf.data(), buf.size(), p)) r.output += buf.data();
   r.status = ::pclose(p);

@@ -25,6 +25,7 @@
 #include "haptics/display_grid.hpp"
 #include "haptics/tactile_dataset.hpp"
 #include "scratch_dir.hpp"
+#include "test_paths.hpp"
 
 extern char** environ;
 
@@ -157,7 +158,7 @@ struct Exit {
 };
 
 Exit runCli(const std::vector<std::string>& args, const fs::path& dir, bool interrupt_when_progress = false) {
-  std::vector<std::string> all = {ONETIP_CLI, "collect"};
+  std::vector<std::string> all = {onetip::test::cliPath(), "collect"};
   all.insert(all.end(), args.begin(), args.end());
   std::vector<char*> argv;
   for (auto& a : all) argv.push_back(a.data());

@@ -10,6 +10,7 @@
 #include "haptics/knn_renderer.hpp"
 #include "haptics/tactile_dataset.hpp"
 #include "scratch_dir.hpp"
+#include "test_paths.hpp"
 
 using namespace onetip;
 using namespace onetip::haptics;
@@ -21,7 +22,7 @@ struct Run {
   std::string output;
 };
 Run run(const std::string& args) {
-  const std::string cmd = std::string(ONETIP_CLI) + " render " + args + " 2>&1";
+  const std::string cmd = std::string(onetip::test::cliPath()) + " render " + args + " 2>&1";
   FILE* p = ::popen(cmd.c_str(), "r");
   std::string out;
   char buf[512];

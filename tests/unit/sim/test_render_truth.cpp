@@ -11,6 +11,7 @@
 #include "sim/camera_rig.hpp"
 #include "sim/scenario.hpp"
 #include "sim/simulator.hpp"
+#include "test_paths.hpp"
 
 using namespace onetip;
 using namespace onetip::sim;
@@ -55,7 +56,7 @@ Errors compare(const cv::Mat& frame, const std::vector<cv::Point2f>& truth) {
 }
 
 void checkScenario(const std::string& name, double noise_sigma, double rms_limit) {
-  Scenario sc = loadScenario(std::string(ONETIP_SOURCE_DIR) + "/samples/scenarios/" + name + ".yaml");
+  Scenario sc = loadScenario(std::string(onetip::test::sourceDir()) + "/samples/scenarios/" + name + ".yaml");
   sc.image.noise_sigma = noise_sigma;
   SimulatorOptions o;
   o.frames = 9;

@@ -11,13 +11,14 @@
 #include "sim/scenario.hpp"
 #include "sim/simulator.hpp"
 #include "scratch_dir.hpp"
+#include "test_paths.hpp"
 
 using namespace onetip;
 using namespace onetip::sim;
 namespace fs = std::filesystem;
 
 namespace {
-const fs::path kScenarios = fs::path(ONETIP_SOURCE_DIR) / "samples" / "scenarios";
+const fs::path kScenarios = fs::path(onetip::test::sourceDir()) / "samples" / "scenarios";
 
 std::string loadError(const std::string& text) {
   const test_support::ScratchDir scratch("onetip-scenario");
@@ -69,7 +70,7 @@ TEST(Scenarios, BadFilesNameTheBadKey) {
 TEST(Scenarios, SimCommandWritesWholeOutputOrNone) {
   const test_support::ScratchDir scratch("onetip-sim-out");
   const fs::path out = scratch.path() / "out";
-  const std::string cli = ONETIP_CLI;
+  const std::string cli = onetip::test::cliPath();
   ASSERT_EQ(run(cli + " sim --scenario " + (kScenarios / "press.yaml").string() + " --out " + out.string() +
                 " --frames 5 --quiet"),
             0);

@@ -17,11 +17,12 @@
 #include "viewer/panel_layout.hpp"
 #include "viewer/viewer_session.hpp"
 #include "viewer/virtual_finger.hpp"
+#include "test_paths.hpp"
 
 namespace onetip::viewer {
 namespace {
 
-const std::string kDemo = std::string("sim:") + ONETIP_SOURCE_DIR + "/samples/scenarios/demo_touch.yaml";
+const std::string kDemo = std::string("sim:") + onetip::test::sourceDir() + "/samples/scenarios/demo_touch.yaml";
 
 // Pixels within `tolerance` (per channel, 0-255) of a colour.
 int pixelsNear(const cv::Mat& bgr, const Rgba& c, int tolerance) {

@@ -6,17 +6,18 @@
 #include <filesystem>
 #include <opencv2/imgcodecs.hpp>
 #include <string>
+#include "test_paths.hpp"
 
 namespace {
 
 int run(const std::string& args) {
-  return std::system((std::string(ONETIP_CLI) + " view " + args + " >/dev/null 2>&1").c_str());
+  return std::system((std::string(onetip::test::cliPath()) + " view " + args + " >/dev/null 2>&1").c_str());
 }
 
 TEST(ViewCli, HeadlessScreenshotOfASimulatedPress) {
   const auto png = std::filesystem::temp_directory_path() / ("onetip_view_" + std::to_string(::getpid()) + ".png");
   std::filesystem::remove(png);
-  const std::string scenario = std::string(ONETIP_SOURCE_DIR) + "/samples/scenarios/press.yaml";
+  const std::string scenario = std::string(onetip::test::sourceDir()) + "/samples/scenarios/press.yaml";
   ASSERT_EQ(run("--input sim:" + scenario + " --frames 4 --size 960x540 --screenshot " + png.string()), 0);
   const cv::Mat shot = cv::imread(png.string());
   ASSERT_FALSE(shot.empty());

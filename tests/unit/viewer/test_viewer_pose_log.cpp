@@ -15,11 +15,12 @@
 #include "core/error.hpp"
 #include "sim/simulator.hpp"
 #include "viewer/viewer_session.hpp"
+#include "test_paths.hpp"
 
 namespace onetip::viewer {
 namespace {
 
-const std::string kDemoPath = std::string(ONETIP_SOURCE_DIR) + "/samples/scenarios/demo_touch.yaml";
+const std::string kDemoPath = std::string(onetip::test::sourceDir()) + "/samples/scenarios/demo_touch.yaml";
 
 std::string tempCsv(const std::string& name) {
   return (std::filesystem::temp_directory_path() / (name + std::to_string(::getpid()) + ".csv")).string();

@@ -17,13 +17,14 @@
 #include "vision/calibration_board.hpp"
 #include "vision/stereo_calibration.hpp"
 #include "scratch_dir.hpp"
+#include "test_paths.hpp"
 
 namespace onetip::vision {
 namespace {
 
 namespace fs = std::filesystem;
 
-const std::string kReal = std::string(ONETIP_TEST_DATA_DIR) + "/real/opencv_stereo_9x6/";
+const std::string kReal = std::string(onetip::test::testDataDir()) + "/real/opencv_stereo_9x6/";
 
 std::vector<cv::Point2f> gridAt(int rows, int cols, double angle_deg, bool mirrored) {
   std::vector<cv::Point2f> g;
@@ -113,7 +114,7 @@ struct CliRun {
 
 CliRun runCli(const std::string& args) {
   CliRun run;
-  const std::string cmd = std::string(ONETIP_CLI) + " calibrate " + args + " 2>&1";
+  const std::string cmd = std::string(onetip::test::cliPath()) + " calibrate " + args + " 2>&1";
   FILE* pipe = popen(cmd.c_str(), "r");
   if (pipe == nullptr) return run;
   std::array<char, 512> buf{};

@@ -14,11 +14,12 @@
 
 #include "core/csv_table.hpp"
 #include "vision/grid_tracker.hpp"
+#include "test_paths.hpp"
 
 namespace onetip::vision {
 namespace {
 
-const std::string kStereoDir = std::string(ONETIP_TEST_DATA_DIR) + "/real/opencv_stereo_9x6/";
+const std::string kStereoDir = std::string(onetip::test::testDataDir()) + "/real/opencv_stereo_9x6/";
 
 using PointTable = std::map<int, cv::Point2f>;  // index -> position
 
@@ -137,7 +138,7 @@ TEST(RealPhotos, SideBySideFramesAnchoredInEachView) {
 }
 
 TEST(RealPhotos, SyntheticChessboardPngAgainstGroundTruth) {
-  const std::string dir = std::string(ONETIP_TEST_DATA_DIR) + "/real/opencv_chessboard_png/";
+  const std::string dir = std::string(onetip::test::testDataDir()) + "/real/opencv_chessboard_png/";
   const cv::Mat rgba = cv::imread(dir + "chessboard.png", cv::IMREAD_UNCHANGED);
   ASSERT_FALSE(rgba.empty());
   cv::Mat grey;

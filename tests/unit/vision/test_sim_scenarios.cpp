@@ -14,6 +14,7 @@
 #include "sim/camera_rig.hpp"
 #include "sim/simulator.hpp"
 #include "vision/grid_tracker.hpp"
+#include "test_paths.hpp"
 
 namespace onetip::vision {
 namespace {
@@ -72,7 +73,7 @@ std::vector<int> framesToRender(const sim::Scenario& scenario) {
 }
 
 TEST(SimScenarios, LargestDeformationDetectedWithoutSwaps) {
-  const std::filesystem::path dir = std::filesystem::path(ONETIP_SOURCE_DIR) / "samples/scenarios";
+  const std::filesystem::path dir = std::filesystem::path(onetip::test::sourceDir()) / "samples/scenarios";
   std::vector<std::filesystem::path> files;
   for (const auto& e : std::filesystem::directory_iterator(dir))
     if (e.path().extension() == ".yaml") files.push_back(e.path());

@@ -17,6 +17,7 @@
 #include "core/sensor_frame.hpp"
 #include "vision/deformation_field.hpp"
 #include "vision/triangulator.hpp"
+#include "test_paths.hpp"
 
 namespace onetip::vision {
 namespace {
@@ -224,7 +225,7 @@ TEST(Triangulator, RestFieldGivesTheSensorFrameAndDeformationField) {
 // a flat board of one-square spacing (exact geometry), and agree with the
 // reference triangulation.
 TEST(Triangulator, RealBoardsReproduceTheBoardGeometry) {
-  const std::string dir = std::string(ONETIP_TEST_DATA_DIR) + "/real/opencv_stereo_9x6/reference/";
+  const std::string dir = std::string(onetip::test::testDataDir()) + "/real/opencv_stereo_9x6/reference/";
   const StereoCalibration calib = loadCalibration(dir + "reference_calib_sbs_pairs01-09.yaml");
   const double square = 25.0;  // nominal mm: T in the file is squares x 25
   const CsvTable corners = readCsv(dir + "corners_pairs01-09.csv");

@@ -1,0 +1,22 @@
+#!/usr/bin/env bash
+# CI's sanitizer leg: one clang tree (build-san) for AddressSanitizer + UndefinedBehaviorSanitizer
+# and for the libFuzzer harnesses. Every library and test is compiled with
+# -fsanitize=address,undefined,fuzzer-no-link (coverage feedback for the fuzzers); the harnesses
+# alone link libFuzzer (-fsanitize=fuzzer, tests/fuzz/CMakeLists.txt). The whole suite but the
+# installed-package tests runs under the sanitizers, DDS included, then every harness runs from
+# its committed seeds for FUZZ_SECONDS (default 10) each.
+# Extra arguments go to ctest (.ci/run passes --output-junit); the harnesses' table is also written
+# to FUZZ_RESULTS (default build-san/fuzz-results.txt).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash .ci/install-deps.sh
+source .ci/build-env.sh
+CC=clang CXX=clang++ cmake -S . -B build-san -DCMAKE_BUILD_TYPE=RelWithDebInfo -DONETIP_SANITIZE=ON -DONETIP_FUZZ=ON \
+  -DONETIP_BUILD_BENCHMARKS=OFF -DONETIP_WITH_DDS=ON >/dev/null
+cmake --build build-san -j"$(nproc)"
+export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+status=0
+(cd build-san && ctest --output-on-failure -j"$(nproc)" -LE package "$@") || status=1
+bash tests/fuzz/run_fuzzers.sh build-san "${FUZZ_SECONDS:-10}" | tee "${FUZZ_RESULTS:-build-san/fuzz-results.txt}" ||
+  status=1
+exit $status
