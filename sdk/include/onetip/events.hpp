@@ -1,15 +1,26 @@
-// onetip/events.hpp — what a running Sensor reports: discrete events and
-// per-frame results.
-//
-// Frames and units (docs/reference.md): positions in millimetres in the sensor
-// frame S (origin at the rest-state marker centroid, z out of the pad towards
-// the finger, x along increasing marker column, y = z × x); angles in degrees;
-// Input6 = [dx, dy, dz, yaw, pitch, roll], the finger's motion since contact
-// onset (types.hpp). Times: `t` is the frame's own timestamp from its source
-// (seconds: the driver's capture time for cameras, the scenario time for
-// "sim:" sources, index / rate for folders); `arrival_s` is when the frame
-// arrived from the source, on the steady clock of onetip::clockSeconds(), so
-// `clockSeconds() - arrival_s` in a callback is the latency of that event.
+/**
+ * @file onetip/events.hpp
+ * @brief What a running Sensor reports: discrete events (Event) and per-frame
+ * results (FrameResult), and the clock they are stamped with.
+ *
+ * Frames and units (docs/reference.md): positions in millimetres in the sensor
+ * frame S (origin at the rest-state marker centroid, z out of the pad towards
+ * the finger, x along increasing marker column, y = z × x); angles in degrees;
+ * Input6 = [dx, dy, dz, yaw, pitch, roll], the finger's motion since contact
+ * onset (types.hpp).
+ *
+ * Times, in seconds: `t` is the frame's own timestamp from its source (the
+ * driver's capture time for V4L2 cameras, the scenario time for "sim:"
+ * sources, the recorded time for session folders, the container's position
+ * for video files, frame index / 30 for a plain folder of images); `arrival_s`
+ * is when the frame arrived from the source, on the steady clock of
+ * onetip::clockSeconds(), so `clockSeconds() - arrival_s` in a callback is the
+ * latency of that event.
+ *
+ * Events and results are plain values handed out by copy (Sensor::pollEvent(),
+ * Sensor::pollFrame()) or by const reference to a callback, valid for the
+ * duration of that call; copy what you keep.
+ */
 #pragma once
 
 #include <cstdint>
@@ -22,23 +33,39 @@
 
 namespace onetip {
 
-// Seconds on a monotonic clock (std::chrono::steady_clock) shared by the
-// library and its callers: the clock of Event::arrival_s and FrameResult::arrival_s.
+/**
+ * @brief Seconds on the monotonic clock (std::chrono::steady_clock) shared by
+ * the library and its callers: the clock of Event::arrival_s and
+ * FrameResult::arrival_s.
+ *
+ * Its origin is unspecified (not wall-clock time): use only differences.
+ * Any thread; never throws.
+ * @return the current time of that clock, s.
+ */
 ONETIP_EXPORT double clockSeconds() noexcept;
 
+/// The kind of an Event.
 enum class EventType : std::uint8_t {
-  contact_begin = 0,  // a contact starts; the 6-D input restarts from zero
-  contact_end = 1,    // the contact ended; the 6-D input returns to zero (when its finger lifts while
-                      // another stays on the pad, contact_begin for that one follows in the same frame)
-  input = 2,          // the 6-D input of a frame in contact (every such frame)
-  press = 3,          // the press button went down (dz rose above options.press_mm)
-  release = 4,        // the press button went up (dz fell below options.release_mm)
-  state_changed = 5,  // the contact state (none/stick/partial_slip/slip) differs from the previous frame's
-  error = 6,          // something the caller should know: a source error, a frame that could not be
-                      // used, too few markers, a callback that threw; `message` says what
+  /// A contact starts; the 6-D input restarts from zero.
+  contact_begin = 0,
+  /// The contact ended; the 6-D input returns to zero. When its finger lifts
+  /// while another stays on the pad, contact_begin for that one follows in the same frame.
+  contact_end = 1,
+  input = 2,          ///< The 6-D input of a frame in contact (one per such frame).
+  press = 3,          ///< The press button went down (dz rose above SensorOptions::press_mm).
+  release = 4,        ///< The press button went up (dz fell below SensorOptions::release_mm).
+  state_changed = 5,  ///< The contact state (none/stick/partial_slip/slip) differs from the previous frame's.
+  /// Something the caller should know: a source error, a frame that could not
+  /// be used, too few markers, a callback that threw; Event::message says what.
+  error = 6,
 };
 
-// "contact_begin", "contact_end", "input", "press", "release", "state_changed", "error".
+/**
+ * @brief The event type's name.
+ * @param e an event type; a value outside the enumerators gives "error".
+ * @return "contact_begin", "contact_end", "input", "press", "release",
+ *         "state_changed" or "error" (a static string).
+ */
 constexpr std::string_view toString(EventType e) noexcept {
   switch (e) {
     case EventType::contact_begin: return "contact_begin";
@@ -52,24 +79,32 @@ constexpr std::string_view toString(EventType e) noexcept {
   return "error";
 }
 
+/// One event of a running Sensor (see EventType).
 struct Event {
-  EventType type = EventType::input;
-  std::int64_t frame = -1;   // index of the source frame that produced it (-1: not tied to a frame)
-  double t = 0;              // that frame's timestamp, s
-  double arrival_s = 0;      // when that frame arrived from the source, s (clockSeconds())
-  Input6 input;              // the 6-D input after filtering and shaping (mm, deg); zero out of contact
-  ContactState state = ContactState::none;
-  std::string message;       // error events: one line saying what happened
+  EventType type = EventType::input;  ///< What happened.
+  std::int64_t frame = -1;   ///< Index of the source frame that produced it; -1: not tied to a frame (a device-level source error).
+  double t = 0;              ///< That frame's timestamp from its source, s.
+  double arrival_s = 0;      ///< When that frame arrived from the source, s, on clockSeconds().
+  Input6 input;              ///< The 6-D input after filtering and shaping (mm, deg; FrameResult::input); zero out of contact.
+  ContactState state = ContactState::none;  ///< The contact state at this event.
+  std::string message;       ///< Error events: one line saying what happened; empty otherwise.
 };
 
+/// What became of one frame.
 enum class FrameStatus : std::uint8_t {
-  ok = 0,         // processed
-  reference = 1,  // this frame became the rest state (the first frame, or after reReference())
-  skipped = 2,    // unusable frame (wrong size, empty): message says why
-  lost = 3,       // too few markers found or tracked: message says why; no pose update
+  ok = 0,         ///< Processed.
+  reference = 1,  ///< This frame became the rest state (the first good frame, or the first after Sensor::reReference()).
+  /// Unusable frame (wrong size, empty, or a candidate rest state with too few
+  /// markers): FrameResult::message says why; when it was to be the rest state, the next frame is tried.
+  skipped = 2,
+  lost = 3,       ///< Too few markers found or tracked: FrameResult::message says why; no pose update.
 };
 
-// "ok", "reference", "skipped", "lost".
+/**
+ * @brief The frame status's name.
+ * @param s a frame status; a value outside the enumerators gives "lost".
+ * @return "ok", "reference", "skipped" or "lost" (a static string).
+ */
 constexpr std::string_view toString(FrameStatus s) noexcept {
   switch (s) {
     case FrameStatus::ok: return "ok";
@@ -80,39 +115,70 @@ constexpr std::string_view toString(FrameStatus s) noexcept {
   return "lost";
 }
 
-// Milliseconds spent on one frame. capture: the source's next() (grab and
-// decode); queue: waiting between capture and processing; detect .. pose: the
-// processing stages; process: all of processing (detect to pose and events).
+/// Milliseconds spent on one frame, stage by stage.
 struct StageTimes {
   double capture = 0, queue = 0, detect = 0, track = 0, triangulate = 0, contact = 0, pose = 0, process = 0;
+  /// @var capture
+  /// @brief The source's read of the frame (grab and decode), ms.
+  /// @var queue
+  /// @brief Waiting between capture and processing, ms.
+  /// @var detect
+  /// @brief Finding the markers in both views, ms.
+  /// @var track
+  /// @brief Tracking the markers from the previous frame, ms.
+  /// @var triangulate
+  /// @brief Stereo triangulation of the markers, ms.
+  /// @var contact
+  /// @brief Contact analysis (deformation field, regions), ms.
+  /// @var pose
+  /// @brief The 6-D pose and its events, ms.
+  /// @var process
+  /// @brief All of processing, detect to pose and events, ms.
 };
 
-// One marker of the pattern grid in one frame (index = id = row * cols + col).
+/// One marker of the pattern grid in one frame (its index in FrameResult::markers is its id = row * cols + col).
 struct MarkerState {
-  bool valid = false;             // triangulated in this frame
-  double x = 0, y = 0, z = 0;     // position in S, mm (when valid)
-  bool displaced = false;         // valid now and at rest: the displacement below is known
-  double ux = 0, uy = 0, uz = 0;  // displacement from the rest position, S, mm; -uz is the press depth here
-  int region = -1;                // contact region (0 = the largest) it belongs to, -1 outside every region
+  bool valid = false;             ///< Triangulated in this frame; x, y, z hold a position only then.
+  double x = 0, y = 0, z = 0;
+  /// @var x
+  /// @brief Position along S.x, mm (when valid).
+  /// @var y
+  /// @brief Position along S.y, mm (when valid).
+  /// @var z
+  /// @brief Position along S.z, mm (when valid).
+  bool displaced = false;         ///< Valid now and at rest: the displacement ux, uy, uz is known.
+  double ux = 0, uy = 0, uz = 0;
+  /// @var ux
+  /// @brief Displacement from the rest position along S.x, mm (when displaced).
+  /// @var uy
+  /// @brief Displacement from the rest position along S.y, mm (when displaced).
+  /// @var uz
+  /// @brief Displacement from the rest position along S.z, mm (when displaced); -uz is the press depth here.
+  int region = -1;                ///< The contact region (0 = the largest) it belongs to; -1 outside every region (or not displaced).
 };
 
+/// Everything the pipeline knows about one processed frame (Sensor::onFrame(), Sensor::pollFrame()).
 struct FrameResult {
-  std::int64_t frame = -1;   // source frame index
-  double t = 0;              // frame timestamp, s
-  double arrival_s = 0;      // clockSeconds() at arrival
-  FrameStatus status = FrameStatus::skipped;
-  std::string message;       // why, when skipped or lost
-  bool contact = false;
-  ContactState state = ContactState::none;
-  Input6 raw;                // the measured 6-D input (what `onetip process` writes to pose.csv)
-  Input6 input;              // raw after the filter and per-axis gain / dead zone (what events carry)
-  bool pressed = false;      // the press button
-  bool out_of_range = false; // raw exceeded the working range (raw is clamped to clamp_factor times it)
-  int rows = 0, cols = 0;    // the marker grid
-  std::vector<MarkerState> markers;  // rows * cols entries, indexed by marker id
-  int contact_regions = 0;   // separate contact regions (fingers)
-  double max_normal_mm = 0;  // the deepest normal deformation of the pad, mm
-  StageTimes times;
+  std::int64_t frame = -1;   ///< Source frame index.
+  double t = 0;              ///< The frame's timestamp from its source, s.
+  double arrival_s = 0;      ///< When the frame arrived from the source, s, on clockSeconds().
+  FrameStatus status = FrameStatus::skipped;  ///< What became of the frame.
+  std::string message;       ///< Why, when skipped or lost; empty otherwise.
+  bool contact = false;      ///< A finger touches the pad.
+  ContactState state = ContactState::none;  ///< The contact state; none out of contact.
+  Input6 raw;                ///< The measured 6-D input, mm and degrees (what `onetip process` writes to pose.csv).
+  Input6 input;              ///< raw after the filter and the per-axis gain and dead zone (what events carry), mm and degrees.
+  bool pressed = false;      ///< The press button (SensorOptions::press_mm, SensorOptions::release_mm).
+  bool out_of_range = false; ///< raw exceeded the working range (raw is then clamped to SensorOptions::clamp_factor times it).
+  int rows = 0, cols = 0;
+  /// @var rows
+  /// @brief Rows of the marker grid; 0 when the frame was skipped or lost.
+  /// @var cols
+  /// @brief Columns of the marker grid; 0 when the frame was skipped or lost.
+  std::vector<MarkerState> markers;  ///< rows * cols entries, indexed by marker id (the rest positions for a reference frame).
+  int contact_regions = 0;   ///< Separate contact regions (fingers).
+  double max_normal_mm = 0;  ///< The deepest normal deformation of the pad, mm.
+  StageTimes times;          ///< Time spent on this frame per stage, ms.
 };
 
 }  // namespace onetip

@@ -1,5 +1,11 @@
-// onetip/onetip.hpp — the whole public C++ API in one include.
-// Frames, units and the 6-D input: types.hpp and events.hpp.
+/**
+ * @file onetip/onetip.hpp
+ * @brief The whole public C++ API in one include.
+ *
+ * Start with onetip::Sensor (sensor.hpp) and the events it reports
+ * (events.hpp); frames, units and the 6-D input are described in types.hpp.
+ * Link with `onetip::onetip` (CMake `find_package(onetip)`) or `pkg-config onetip`.
+ */
 #pragma once
 
 #include "onetip/error.hpp"

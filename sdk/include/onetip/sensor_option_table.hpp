@@ -1,33 +1,40 @@
-// onetip/sensor_option_table.hpp — THE table of SensorOptions: one row per
-// option, the only place an option is declared. Every surface derives from it
-// or is checked against it by tests (label `options`): the C++ struct and its
-// validate(), the options file's keys, reader, writer and messages, the
-// conversion to the pipeline's settings, the C ABI's introspection and keyed
-// accessors, Python's SensorOptions attributes and C#'s option table.
-//
-// No include guard on purpose: an X-macro list. Define
-//   ONETIP_OPTION(name, Type, min, max, unit, doc, default...)
-// and include this file to expand one row per option, in this order (the
-// order of the options file and of SensorOptions::table()):
-//   name     the C++ field, the file key, the Python attribute and the C key
-//   Type     int, double, bool, FilterKind or AxisArray (six values in Input6
-//            order [dx, dy, dz, yaw, pitch, roll]); it gives the OptionType
-//   min, max the closed range of every value (bool 0..1, FilterKind 0..2)
-//   unit     "" for counts and plain factors; "mm|deg" on an axis array means
-//            mm for dx, dy, dz and degrees for yaw, pitch, roll
-//   doc      one line for generated help and bindings
-//   default  the initialiser (six numbers for an AxisArray)
-// Checks that involve two options (release_mm < press_mm) live in
-// sdk/src/core/option_table.cpp, beside the code that derives validate().
-//
-// Adding an option: one row here, then its consumer code: the pipeline
-// setting it feeds (one line of forEachPipelineField in
-// sdk/src/pipeline/options_io.cpp) and, since the C struct onetip_options is
-// fixed-layout, a field there, a line of forEachCField
-// (bindings/c/src/c_options.cpp) and the C# mirror
-// (bindings/csharp/src/SensorOptions.cs; a new C field is an incompatible
-// change of the C ABI), and its row in docs/reference.md. The `options` tests
-// fail until every surface carries it.
+/**
+ * @file onetip/sensor_option_table.hpp
+ * @brief The table of SensorOptions: one row per option, the only place an
+ * option is declared.
+ *
+ * Every surface derives from it or is checked against it by tests (label
+ * `options`): the C++ struct and its validate(), the options file's keys,
+ * reader, writer and messages, the conversion to the pipeline's settings, the
+ * C ABI's introspection and keyed accessors, Python's SensorOptions attributes
+ * and C#'s option table. The reference documents each row as a field of
+ * onetip::SensorOptions.
+ *
+ * No include guard on purpose: an X-macro list. Define
+ *     ONETIP_OPTION(name, Type, min, max, unit, doc, default...)
+ * and include this file to expand one row per option, in this order (the
+ * order of the options file and of SensorOptions::table()):
+ *   - name: the C++ field, the file key, the Python attribute and the C key;
+ *   - Type: int, double, bool, FilterKind or AxisArray (six values in Input6
+ *     order [dx, dy, dz, yaw, pitch, roll]); it gives the OptionType;
+ *   - min, max: the closed range of every value (bool 0..1, FilterKind 0..2);
+ *   - unit: "" for counts and plain factors; "mm|deg" on an axis array means
+ *     mm for dx, dy, dz and degrees for yaw, pitch, roll;
+ *   - doc: one line for generated help and bindings;
+ *   - default: the initialiser (six numbers for an AxisArray).
+ *
+ * Checks that involve two options (release_mm < press_mm) live in
+ * sdk/src/core/option_table.cpp, beside the code that derives validate().
+ *
+ * Adding an option: one row here, then its consumer code: the pipeline
+ * setting it feeds (one line of forEachPipelineField in
+ * sdk/src/pipeline/options_io.cpp) and, since the C struct onetip_options is
+ * fixed-layout, a field there, a line of forEachCField
+ * (bindings/c/src/c_options.cpp) and the C# mirror
+ * (bindings/csharp/src/SensorOptions.cs; a new C field is an incompatible
+ * change of the C ABI), and its row in docs/reference.md. The `options` tests
+ * fail until every surface carries it.
+ */
 #ifndef ONETIP_OPTION
 #error "define ONETIP_OPTION(name, Type, min, max, unit, doc, default...) before including this file"
 #endif
