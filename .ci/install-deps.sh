@@ -4,7 +4,7 @@
 set -euo pipefail
 
 packages=(
-  build-essential cmake pkg-config git ccache  # ccache: the compiler cache of every build in .ci/ (.ci/build-env.sh)
+  build-essential cmake pkg-config git ccache ninja-build  # ccache, Ninja: every build in .ci/ (.ci/build-env.sh)
   doxygen  # the API reference: the `docs` target (docs/api), warnings as errors
   libopencv-dev libeigen3-dev libceres-dev libpcl-dev
   libturbojpeg0-dev libv4l-dev linux-libc-dev
