@@ -51,7 +51,7 @@ struct AdaptivePoseOptions {
   // turn about its own line reaches this many sigmas of that turn's noise and it moves rigidly to within
   // thin_rigidity_sigmas (pose/anchored_fit.hpp). A twist's slipping edge stripe fakes a tilt of 2-3 of those
   // sigmas. Lower bars fail measured cases: at 3 and 3 FailurePoints.AContactBeginsWhenOneMarkerPassesTheThreshold,
-  // at 5 and 4 a plate pressed edge first is read 0.7 deg RMS off in pitch (docs/decisions/0008).
+  // at 5 and 4 a plate pressed edge first is read 0.7 deg RMS off in pitch (decision record 0008, docs/decisions).
   double thin_turn_significance = 5.0;
   double thin_rigidity_sigmas = 3.0;          // [0, 100]
   double stick_hold_s = 0.33;                 // [0.001, 10] s
@@ -60,7 +60,7 @@ struct AdaptivePoseOptions {
   // [1, 10000] a stick set that fixes no general rotation alone gets Eq. 13-15 (the slip markers' normal
   // residuals fix the rest) only with this many markers: the last 2-3 stuck markers as gross slip
   // begins are often creeping, and trusting them as the stick half of Ceres hides the slide behind a
-  // rotation (with 3, gross slip in a 6 mm slide is declared late; docs/decisions/0008).
+  // rotation (with 3, gross slip in a 6 mm slide is declared late; decision record 0008, docs/decisions).
   // On a contact too small to declare macroscopic slip, fewer will do once each has been in the contact
   // for the stick hold (thinStickSetTrusted, model_selection.hpp).
   int min_thin_stick_markers = 4;

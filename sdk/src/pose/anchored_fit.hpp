@@ -24,7 +24,7 @@
 // sqrt(2) sigma / (e sqrt(n)). By that formula, at 0.0006 mm, a 2 x 2 block of
 // a 9 x 9 pattern (e = 1.2 mm, half a pitch) rolling 0.46 deg a frame is 23
 // of those sigmas, and the 0.1-0.15 deg that a twist's slipping edge stripe
-// fakes (e = 0.52 mm, 4-5 markers; docs/decisions/0008) 2-3.
+// fakes (e = 0.52 mm, 4-5 markers; decision record 0008) 2-3.
 #pragma once
 
 #include <cstdint>
