@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""What an estimator exact everywhere but in gross slip would still lose (docs/pose, session 21).
+"""What an estimator exact everywhere but in gross slip would still lose (decision record 0012, docs/decisions).
 
 Reads the per-frame traces of the campaign's field runs (`pose_campaign --trace SEED --trace-out DIR/SEED.csv`
 for each seed) and replays only their truth: the estimated turn is taken exact in every frame except those where

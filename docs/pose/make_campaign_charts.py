@@ -1,15 +1,15 @@
 #!/usr/bin/python3
-"""Charts and the summary table of the pose campaign (issue 15).
+"""Charts and the summary table of the pose campaign (docs/pose/README.md, "Campaign").
 
 Inputs (build/bench/pose_campaign, see README.md): docs/pose/data/campaign.csv
-(this estimator) and docs/pose/data/campaign_baseline.csv (the estimator of
-session 5, same seeds, same simulator). Outputs:
+(this estimator) and docs/pose/data/campaign_baseline.csv (the first estimator,
+constant thresholds, built from commit 182873e; same seeds, same simulator). Outputs:
   campaign_conditions.png   worst linear-range RMSE per run against each condition
   campaign_envelope.png     share of diverged runs per condition bin
   campaign_accuracy_time.png accuracy against time per frame, per contact model
   campaign_stick_truth.png  the stick labels against the simulator's per-marker truth, and what the
                             truth offered where each divergence began (this estimator's file only)
-  data/campaign_summary.csv the figures the README quotes
+  data/campaign_summary.csv the figures docs/pose/README.md quotes
 Run: /usr/bin/python3 docs/pose/make_campaign_charts.py [data_dir] [out_dir]
 """
 import csv
@@ -25,8 +25,9 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 AXES = ["dx", "dy", "dz", "yaw", "pitch", "roll"]
-ESTIMATORS = [("campaign_baseline.csv", "session 5 (tuned thresholds)", "tab:gray"),
-              ("campaign.csv", "sessions 6-21 (derived thresholds, rolling-aware, thin stick sets, way back, a region per finger)", "tab:blue")]
+ESTIMATORS = [("campaign_baseline.csv", "first estimator (constant thresholds)", "tab:gray"),
+              ("campaign.csv", "this estimator (derived thresholds, rolling-aware, thin stick sets, way back, a region per finger)",
+               "tab:blue")]
 
 
 def rows(path):

@@ -25,11 +25,11 @@
 // the fraction is of the lower peak's own depth (mm cancel), as the region
 // cut is a fraction of the deepest. Cost: a sort of the masked markers.
 //
-// Measured in the pose campaign (300 random runs, field level, the largest
+// Measured over 300 random scenarios (docs/pose, "Campaign"; the largest
 // (P - d) / P of a run's enclosed peaks): a finger or a sphere alone at most
 // 0.01; two fingers 0.41-0.60 in 26 of the 38 two-finger runs; a flat plate
 // 0.29 and below, but 0.40 and 0.49 in two runs (a few frames each), and
-// up to 0.59 at the pattern's border before the enclosure rule.
+// up to 0.59 at the pattern's border without the enclosure rule.
 #pragma once
 
 #include <cstdint>
@@ -54,14 +54,13 @@ std::vector<int> splitAtValleys(int rows, int cols, const std::vector<std::uint8
 // cut_f = region_fraction x P_f, P_f the largest `normal` (|u_i.z|, mm) among
 // its markers, in 8-connected pieces. `floor` is the contact threshold: a
 // finger counts from where its imprint is a touch. With one finger this is
-// the single global cut (region_fraction x the deepest) of before: no
-// single-finger run of the pose campaign changed. A shallow
+// the single global cut, region_fraction x the deepest. A shallow
 // finger beside a deep one keeps its region instead of falling below the deep
 // one's cut, and so does a finger lifting off while another stays, until its
-// imprint falls below the floor. Of the campaign's 33 handovers (a tracked
-// finger lifting while another stays), the estimator's new contact began in
-// the truth's frame in 9 (3 under one global cut) and 1-3 frames early in 15:
-// the truth ends a contact only when the finger touches no node. Returns
+// imprint falls below the floor. Of 33 handovers in the random scenarios (a
+// tracked finger lifting while another stays), the estimator's new contact
+// begins in the truth's frame in 9 (3 under one global cut) and 1-3 frames
+// early in 15: the truth ends a contact only when the finger touches no node. Returns
 // labels numbered by decreasing size; `cuts` (per label, mm) receives each
 // region's cut.
 std::vector<int> labelFingerRegions(int rows, int cols, const std::vector<double>& depth,

@@ -233,10 +233,10 @@ AdaptivePoseEstimator::Drift AdaptivePoseEstimator::footprintDrift(const contact
   travel.z() = 0;
   out.drift.head<2>() -= rho;
   // A press that deepens moves the footprint centre with no slide, also
-  // where the region cannot grow (a plate over the whole pattern, seed 35:
-  // 0.45 mm as it went 0.61 -> 0.74 mm deep). Still decided: when Eq. 16
-  // fails then, the finger slides. (Not an easing press: at a lift-off in
-  // slip, seeds 75 and 245, the drift is the slide.)
+  // where the region cannot grow (a plate over the whole pattern: 0.45 mm
+  // as it went 0.61 -> 0.74 mm deep). Still decided: when Eq. 16 fails
+  // then, the finger slides. (Not an easing press: at a lift-off in slip
+  // the drift is the slide.)
   const bool pressing = common.depth_after - common.depth_before > options_.macro_size_change * common.depth_before;
   out.exceeds = !pressing && out.drift.norm() > std::max(t_.macro_drift_mm, options_.macro_drift_ratio * travel.norm()) +
                                                     rho.norm();

@@ -146,12 +146,12 @@ class AdaptivePoseEstimator {
   // extent (a turn the trim could let a non-rigid set fake is not credited: a
   // slide's saturated markers drift that much): the footprint moved the way
   // the turn rolls it, by no more than rolling a cap of the dimple's
-  // curvature would. rho is read from the dimple, not the finger: at a
-  // rolling reversal in the campaign's seed 47, 0.07-0.12 mm of lag remained
+  // curvature would. rho is read from the dimple, not the finger, so it is
+  // only approximate: at a rolling reversal 0.07-0.12 mm of lag can remain
   // beside a rho of 0.29-0.35 mm (hence the tolerance grows with rho), and
   // under a flat plate (its cap's radius clipped at 1 m) a 0.27 deg turn
-  // predicts 4.0 mm where the footprint moved 1.1 mm the same way (seed 9;
-  // hence a shift short of rho counts). The consensus is left in `sticking`.
+  // predicts 4.0 mm where the footprint moves 1.1 mm the same way (hence a
+  // shift short of rho counts). The consensus is left in `sticking`.
   bool stickingAgain(const contact::ContactField& field, const std::vector<int>& members, const MarkerField& now,
                      std::vector<int>& sticking) const;
   // When stickingAgain holds: the consensus labelled stick, every other marker

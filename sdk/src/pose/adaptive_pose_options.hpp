@@ -49,9 +49,9 @@ struct AdaptivePoseOptions {
   double min_rotation_spread_pitches = 0.5;   // [0.05, 5]
   // [0, 100] noise sigmas: a stick set narrower than the min spread still fixes a general rotation when its
   // turn about its own line reaches this many sigmas of that turn's noise and it moves rigidly to within
-  // thin_rigidity_sigmas (pose/anchored_fit.hpp; session 21: 300 field runs median dx 0.116 -> 0.107 mm,
-  // pitch 0.91 -> 0.85 deg at 5 and 3; at 3 and 3 FailurePoints.AContactBeginsWhenOneMarkerPassesTheThreshold
-  // fails, at 5 and 4 a plate pressed edge first is read 0.7 deg RMS off in pitch)
+  // thin_rigidity_sigmas (pose/anchored_fit.hpp). A twist's slipping edge stripe fakes a tilt of 2-3 of those
+  // sigmas. Lower bars fail measured cases: at 3 and 3 FailurePoints.AContactBeginsWhenOneMarkerPassesTheThreshold,
+  // at 5 and 4 a plate pressed edge first is read 0.7 deg RMS off in pitch (decision record 0008, docs/decisions).
   double thin_turn_significance = 5.0;
   double thin_rigidity_sigmas = 3.0;          // [0, 100]
   double stick_hold_s = 0.33;                 // [0.001, 10] s
@@ -59,8 +59,8 @@ struct AdaptivePoseOptions {
   int min_macro_markers = 15;                 // [1, 10000] smaller regions never declare macroscopic slip
   // [1, 10000] a stick set that fixes no general rotation alone gets Eq. 13-15 (the slip markers' normal
   // residuals fix the rest) only with this many markers: the last 2-3 stuck markers as gross slip
-  // begins are often creeping, and trusting them as the stick half of Ceres hides the slide (3 delays
-  // gross slip in the macro-slip test; 300-run campaign: 232 diverged at 4 against 241 without the rule).
+  // begins are often creeping, and trusting them as the stick half of Ceres hides the slide behind a
+  // rotation (with 3, gross slip in a 6 mm slide is declared late; decision record 0008, docs/decisions).
   // On a contact too small to declare macroscopic slip, fewer will do once each has been in the contact
   // for the stick hold (thinStickSetTrusted, model_selection.hpp).
   int min_thin_stick_markers = 4;
@@ -74,10 +74,12 @@ struct AdaptivePoseOptions {
                                               // shift, in the way back's footprint test)
   double macro_tilt_gate_deg = 1.5;           // [0.01, 90] no decision while the finger tilts this much in the window
   // [0.01, 10] no decision while the region size changes this fraction in the window, nor while the normal
-  // deformation under the footprint deepens by it (a plate over the whole pattern, seed 35: the region cannot grow)
+  // deformation under the footprint deepens by it (a plate over the whole pattern cannot grow its region, but
+  // its footprint centre moves as it presses deeper)
   double macro_size_change = 0.3;
   // [0.001, 1] s the drift must be seen in consecutive frames (at least two): a time, not a count; at
-  // 188 fps two frames (11 ms) of a footprint drifting as a press ended were taken for a slide (seed 140)
+  // 188 fps two frames are 11 ms, in which a coarse footprint still moves as a press ends and would be
+  // taken for a slide
   double macro_confirm_s = 0.067;
   double macro_exit_lag_pitches = 0.05;       // [0.001, 2]
   double max_speed_mm_s = 45;                 // [1, 10000] fastest finger motion followed in one frame

@@ -23,8 +23,8 @@
 // reaches thin_turn_significance times that component's noise
 // sqrt(2) sigma / (e sqrt(n)). By that formula, at 0.0006 mm, a 2 x 2 block of
 // a 9 x 9 pattern (e = 1.2 mm, half a pitch) rolling 0.46 deg a frame is 23
-// of those sigmas, and the 0.1-0.15 deg the twist's edge stripe faked (e =
-// 0.52 mm, 4-5 markers; docs/pose, session 20) 2-3.
+// of those sigmas, and the 0.1-0.15 deg that a twist's slipping edge stripe
+// fakes (e = 0.52 mm, 4-5 markers; decision record 0008) 2-3.
 #pragma once
 
 #include <cstdint>
@@ -70,8 +70,8 @@ AnchoredFit fitAnchored(const contact::StickSlipClassifier& classifier, const co
 // markers among `ids` alone, which fix what their spread fixes (a
 // translation, for one or two). A cap marker trimmed alone is one beginning
 // to move off the finger, as any other; the fit stands (refitting over the
-// rest of a cap too thin to fix a turn froze a rolling finger, campaign
-// seed 140).
+// rest of a cap too thin to fix a turn would drop the turn of a finger that
+// rolls as it presses).
 AnchoredFit fitAnchoredOnTheCap(const contact::StickSlipClassifier& classifier, const contact::ContactField& field,
                                 std::vector<int>& ids, const std::vector<std::uint8_t>& cap, const MarkerField& now,
                                 const Eigen::Isometry3d& pose, const EstimatorThresholds& thresholds,

@@ -20,7 +20,8 @@
 // foundation the skin beside the touch is only faintly convex (its Laplacian
 // n (h / l)^2 grows with the dent n; l the foundation's length), so every
 // member is kept, the fits follow that majority and the press is read short
-// (by a quarter in the campaign's median). The cap itself is clearly concave
+// (by a quarter, in the median over the random scenarios on a foundation).
+// The cap itself is clearly concave
 // from the first frames: L = -2 h^2 / R (-0.28 mm for the shipped finger at
 // 1.2 mm). So the markers with all four neighbours measured and
 //   L_i < -2 * 3 sqrt(20) sigma
@@ -58,8 +59,9 @@ std::vector<std::uint8_t> touchingMarkers(const contact::ContactField& field, co
 // least as deep as the core's shallowest marker; none when the core is empty
 // (nothing is found directly) or the lattice does not match. A foundation's
 // skin beside a touch of one or two markers dips by about half as much as
-// the markers touched (campaign seed 119: 0.13 against 0.23 mm a frame), is
-// not yet clearly convex, and outnumbers them; the cap leaves it out.
+// the markers touched (0.13 against 0.23 mm a frame for a 6.3 mm sphere on a
+// 9 x 9 pattern over a 4.6 mm foundation), is not yet clearly convex, and
+// outnumbers them; the cap leaves it out.
 std::vector<std::uint8_t> capMarkers(const contact::ContactField& field, const std::vector<int>& members, int rows,
                                      int cols, double sigma_mm);
 

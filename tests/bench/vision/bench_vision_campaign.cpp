@@ -14,7 +14,7 @@
 // models), each cut to its first F frames (default 150). --only plays just the
 // runs of those indices (e.g. the ones that miss a target), each numbered as
 // in the full campaign.
-// docs/vision/campaign_charts.py draws the charts from the CSV.
+// docs/vision/make_charts.py draws the charts from the CSV.
 #include <algorithm>
 #include <cstdio>
 #include <cstring>

@@ -16,7 +16,7 @@
 // rate leaves that faint trace, the angle none: an estimator reading this pad
 // would have to integrate a rate from edge effects of a few hundredths of a
 // millimetre (the noise is 0.0006), which depend on the contact mechanics in
-// detail. The estimator here does not (docs/pose, session 21).
+// detail. The estimator here does not (decision record 0012, docs/decisions).
 #include <gtest/gtest.h>
 
 #include <algorithm>

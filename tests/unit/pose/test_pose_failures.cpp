@@ -230,7 +230,8 @@ TEST(FailurePoints, ATiltingPlateIsNotReadAsASlide) {
   // complex.yaml: a pressed 20 mm plate tilts back, left, tip and right by 6 deg.
   // Its footprint swings far over the pad while every marker sticks; a flat cap
   // has so large a rolling radius that the footprint test cannot call it a
-  // slide (session 5 did: dx and dy ran to the -6 mm clamp).
+  // slide (a footprint test without the rolling shift did: dx and dy ran to the
+  // -6 mm clamp).
   const auto frames = replay(sampleScenario("complex"));
   expectSaneOutput(frames);
   EXPECT_EQ(framesIn(frames, ContactState::slip), 0);
