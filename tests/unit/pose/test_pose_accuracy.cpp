@@ -12,7 +12,6 @@
 #include <map>
 
 #include "replay_metrics.hpp"
-#include "sanitizer_leg.hpp"
 
 using namespace onetip;
 using namespace onetip::poseval;
@@ -44,7 +43,6 @@ class Translation : public ::testing::TestWithParam<std::string> {};
 // dz in [0, 3] mm, including the back-and-forth sweeps (turns at +-1.5 mm, at
 // the edge of gross slip).
 TEST_P(Translation, RmseWithinRange) {
-  ONETIP_SWEEP_RUNS_IN_RELEASE_ONLY();
   const auto r = axisRmse(replayed(GetParam()), composedOf, inTranslationRange);
   print(GetParam().c_str(), r);
   ASSERT_GT(r.frames, 40);
@@ -57,7 +55,6 @@ class Rotation : public ::testing::TestWithParam<std::string> {};
 // Issue: rotation RMSE <= 1.0 deg per axis over yaw in [-15, 15] and pitch,
 // roll in [-40, 40] deg at 0.5 mm depth (paper: 2.6 deg roll/pitch, 1.8 deg yaw).
 TEST_P(Rotation, RmseWithinWorkingRange) {
-  ONETIP_SWEEP_RUNS_IN_RELEASE_ONLY();
   const auto r = axisRmse(replayed(GetParam()), composedOf, [](const ReplayFrame& f) {
     return std::abs(f.gt.yaw) <= 15 && std::abs(f.gt.pitch) <= 40 && std::abs(f.gt.roll) <= 40;
   });
