@@ -3,7 +3,8 @@
 // A test that plays hundreds of rendered or simulated frames to measure accuracy statistics repeats,
 // frame after frame, code paths that the suite's shorter tests already run under AddressSanitizer,
 // UndefinedBehaviorSanitizer and libFuzzer's coverage instrumentation (.ci/sanitize.sh). Under them
-// such a sweep runs 10-20 times slower than in Release (the simulator's contact solver and renderer
+// such a sweep runs about ten times slower than in Release (3.6 s against 0.37 s on two pose accuracy
+// tests; the simulator's contact solver and renderer
 // and the vision front end are tight numeric loops, each access and comparison instrumented), so a
 // few of them would take the sanitizer leg past CI's budget while finding nothing the shorter tests
 // do not. A sweep starts with ONETIP_SWEEP_RUNS_IN_RELEASE_ONLY(): in a sanitizer build the test is
