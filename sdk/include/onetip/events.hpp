@@ -86,6 +86,9 @@ struct Event {
   double t = 0;              ///< That frame's timestamp from its source, s.
   double arrival_s = 0;      ///< When that frame arrived from the source, s, on clockSeconds().
   Input6 input;              ///< The 6-D input after filtering and shaping (mm, deg; FrameResult::input); zero out of contact.
+  /// One standard deviation of each component of the measured 6-D input (FrameResult::sd), mm and deg;
+  /// zero out of contact. An axis the pad cannot see (a turn while every contact marker slips) has a wide one.
+  Input6 sd;
   ContactState state = ContactState::none;  ///< The contact state at this event.
   std::string message;       ///< Error events: one line saying what happened; empty otherwise.
 };
@@ -155,6 +158,9 @@ struct MarkerState {
   /// @var uz
   /// @brief Displacement from the rest position along S.z, mm (when displaced); -uz is the press depth here.
   int region = -1;                ///< The contact region (0 = the largest) it belongs to; -1 outside every region (or not displaced).
+  /// Probability in [0, 1] that the marker moves with the finger (sticks) in this frame, from its drift off
+  /// its anchor on the finger (docs/pose); 0 outside the tracked contact.
+  double stick_probability = 0;
 };
 
 /// Everything the pipeline knows about one processed frame (Sensor::onFrame(), Sensor::pollFrame()).
@@ -168,6 +174,10 @@ struct FrameResult {
   ContactState state = ContactState::none;  ///< The contact state; none out of contact.
   Input6 raw;                ///< The measured 6-D input, mm and degrees (what `onetip process` writes to pose.csv).
   Input6 input;              ///< raw after the filter and the per-axis gain and dead zone (what events carry), mm and degrees.
+  /// One standard deviation of each component of raw as the estimator knows it (pose.csv's sd_dx .. sd_roll),
+  /// mm and degrees; zero out of contact. Directions the contact's sticking markers do not fix grow with time
+  /// as the motion prior says (docs/pose).
+  Input6 sd;
   bool pressed = false;      ///< The press button (SensorOptions::press_mm, SensorOptions::release_mm).
   bool out_of_range = false; ///< raw exceeded the working range (raw is then clamped to SensorOptions::clamp_factor times it).
   int rows = 0, cols = 0;

@@ -34,6 +34,7 @@ Event toEvent(const pipeline::PipelineEvent& e) {
   out.t = e.event.t;
   out.arrival_s = toClockSeconds(e.arrival);
   out.input = e.event.input;
+  out.sd = e.event.sd;
   out.state = e.event.state;
   out.message = e.event.message;
   return out;
@@ -53,6 +54,7 @@ FrameResult toFrameResult(const pipeline::PipelineFrame& f) {
   out.state = p.contact ? p.state : ContactState::none;
   out.raw = p.raw;
   out.input = p.input;
+  out.sd = p.sd;
   out.pressed = p.pressed;
   out.out_of_range = p.out_of_range;
   out.rows = r.markers.rows;
@@ -74,6 +76,7 @@ FrameResult toFrameResult(const pipeline::PipelineFrame& f) {
       m.ux = u.x(), m.uy = u.y(), m.uz = u.z();
       m.region = field.region_of.size() == out.markers.size() ? field.region_of[id] : -1;
     }
+    if (p.step.stick_probability.size() == out.markers.size()) m.stick_probability = p.step.stick_probability[id];
   }
   out.times = {f.capture_ms,         f.queue_ms,        r.times.detect, r.times.track,
                r.times.triangulate,  r.times.contact,   r.times.pose,   r.times.process};

@@ -23,6 +23,7 @@ struct InputEvent {
   EventType type = EventType::input;
   double t = 0;                          // seconds
   Input6 input;                          // the output 6-D vector at t
+  Input6 sd;                             // one standard deviation of the measured vector (mm, deg)
   ContactState state = ContactState::none;
   std::string message;                   // error events
 };

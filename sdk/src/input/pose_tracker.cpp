@@ -36,7 +36,7 @@ void PoseTracker::reset() {
 }
 
 void PoseTracker::emit(TrackerResult& r, EventType type, std::string message) const {
-  r.events.push_back({type, r.t, r.input, r.state, std::move(message)});
+  r.events.push_back({type, r.t, r.input, r.sd, r.state, std::move(message)});
 }
 
 void PoseTracker::fillOutputs(TrackerResult& r) {
@@ -52,6 +52,7 @@ void PoseTracker::fillOutputs(TrackerResult& r) {
     v[k] = std::clamp(v[k], -limit, limit);
   }
   r.raw = Input6::fromArray(v);
+  r.sd = r.step.sd;
   const Input6 smooth = filter_ ? filter_->apply(r.raw, r.t) : r.raw;
   r.input = options_.shaping.apply(smooth);
 }

@@ -56,6 +56,7 @@ struct TrackerResult {
   ContactState state = ContactState::none;
   Input6 raw;              // chosen accumulation, clamped; zero out of contact
   Input6 input;            // raw, filtered and shaped
+  Input6 sd;               // one standard deviation of each component of raw (mm, deg; pose/pose_uncertainty.hpp)
   Input6 composed;         // SE(3) composition (unclamped)
   Input6 euler_sum;        // the paper's Euler-increment sum (unclamped)
   bool out_of_range = false;

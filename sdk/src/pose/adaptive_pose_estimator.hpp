@@ -99,6 +99,8 @@ struct PoseStep {
   Eigen::Vector3d onset_centroid{0, 0, 0};                      // c0 (S, mm)
   EstimatorThresholds thresholds;                               // in force this frame
   std::vector<contact::MarkerLabel> labels;  // per marker id: outside, stick or slip
+  std::vector<double> stick_probability;     // per marker id, [0, 1] (contact/stick_probability.hpp); 0 outside
+  Input6 sd;  // one standard deviation of each component of the 6-D input (mm, deg; pose/pose_uncertainty.hpp)
 };
 
 class AdaptivePoseEstimator {
