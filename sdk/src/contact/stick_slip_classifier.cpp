@@ -27,6 +27,7 @@ void StickSlipClassifier::reset(int marker_count) {
   anchor_.assign(static_cast<size_t>(marker_count), Eigen::Vector3d::Zero());
   quiet_frames_.assign(static_cast<size_t>(marker_count), 0);
   frames_in_contact_.assign(static_cast<size_t>(marker_count), 0);
+  drift_.assign(static_cast<size_t>(marker_count), 0.0);
 }
 
 void StickSlipClassifier::retain(const std::vector<int>& members, const MarkerField& now) {
@@ -42,7 +43,9 @@ void StickSlipClassifier::retain(const std::vector<int>& members, const MarkerFi
 }
 
 void StickSlipClassifier::reanchor(int id, const MarkerField& now, const Eigen::Isometry3d& pose_inverse) {
-  anchor_[static_cast<size_t>(id)] = pose_inverse * now.position[static_cast<size_t>(id)];
+  const Eigen::Vector3d anchor = pose_inverse * now.position[static_cast<size_t>(id)];
+  drift_[static_cast<size_t>(id)] = (anchor - anchor_[static_cast<size_t>(id)]).norm();  // rigid: same as in S
+  anchor_[static_cast<size_t>(id)] = anchor;
   quiet_frames_[static_cast<size_t>(id)] = 0;
 }
 
@@ -59,6 +62,7 @@ void StickSlipClassifier::anchorNew(const std::vector<int>& members, const Marke
     label_[i] = MarkerLabel::stick;
     frames_in_contact_[i] = 0;
     reanchor(id, now, inv);
+    drift_[i] = 0;
   }
 }
 
@@ -70,6 +74,7 @@ int StickSlipClassifier::classify(const MarkerField& now, const std::vector<Eige
     if (label_[i] == MarkerLabel::outside) continue;
     ++frames_in_contact_[i];
     const Eigen::Vector3d d = now.position[i] - pose * anchor_[i];
+    drift_[i] = d.norm();
     const Eigen::Vector3d& n = normals[i];
     const double normal_part = std::abs(d.dot(n));
     const double tangential_part = (d - d.dot(n) * n).norm();

@@ -75,6 +75,9 @@ class StickSlipClassifier {
   // Classifications since the marker joined the contact (anchorNew gave it a
   // fresh anchor); a remembered marker (see retain) keeps its count.
   int framesInContact(int id) const { return frames_in_contact_[static_cast<size_t>(id)]; }
+  // The marker's drift off its anchor when last judged or re-anchored (mm): the evidence of
+  // contact/stick_probability.hpp; 0 for a marker anchored afresh.
+  double lastDrift(int id) const { return drift_[static_cast<size_t>(id)]; }
 
  private:
   void reanchor(int id, const MarkerField& now, const Eigen::Isometry3d& pose_inverse);
@@ -85,6 +88,7 @@ class StickSlipClassifier {
   std::vector<Eigen::Vector3d> anchor_;
   std::vector<int> quiet_frames_;
   std::vector<int> frames_in_contact_;
+  std::vector<double> drift_;
 };
 
 }  // namespace onetip::contact

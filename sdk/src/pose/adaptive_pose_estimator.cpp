@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "contact/contact_analyzer.hpp"
+#include "contact/stick_probability.hpp"
 #include "core/rotation.hpp"
 #include "pose/anchored_fit.hpp"
 #include "pose/centroid_motion.hpp"
@@ -16,7 +17,8 @@ namespace onetip::pose {
 
 using contact::MarkerLabel;
 
-AdaptivePoseEstimator::AdaptivePoseEstimator(AdaptivePoseOptions options) : options_(options) {
+AdaptivePoseEstimator::AdaptivePoseEstimator(AdaptivePoseOptions options)
+    : options_(options), uncertainty_(options.uncertainty) {
   options_.validate();
   t_ = deriveThresholds(options_, SensorSelf{});
 }
@@ -62,7 +64,8 @@ PoseStep AdaptivePoseEstimator::start(const contact::ContactField& field, const 
   step.state = ContactState::stick;
   step.n_stick = static_cast<int>(classifier_.withLabel(MarkerLabel::stick).size());
   step.onset_centroid = c0_;
-  step.labels = classifier_.labels();
+  uncertainty_.reset(c0_);
+  reportUncertainty(now, Eigen::Isometry3d::Identity(), step);
   return step;
 }
 
@@ -389,6 +392,7 @@ PoseStep AdaptivePoseEstimator::update(const contact::ContactField& field, const
   classifier_.anchorNew(region.markers, now, pose_);
 
   remember(field, now, region);
+  reportUncertainty(now, increment, step);
 
   step.n_stick = static_cast<int>(classifier_.withLabel(MarkerLabel::stick).size());
   step.n_slip = static_cast<int>(classifier_.withLabel(MarkerLabel::slip).size());
@@ -396,8 +400,36 @@ PoseStep AdaptivePoseEstimator::update(const contact::ContactField& field, const
   else step.state = step.n_slip > 0 ? ContactState::partial_slip : ContactState::stick;
   step.increment = increment;
   step.pose = pose_;
-  step.labels = classifier_.labels();
   return step;
+}
+
+void AdaptivePoseEstimator::reportUncertainty(const MarkerField& now, const Eigen::Isometry3d& increment,
+                                              PoseStep& step) {
+  step.labels = classifier_.labels();
+  step.stick_probability.assign(step.labels.size(), 0.0);
+  std::vector<Eigen::Vector3d> points;
+  std::vector<double> weights;
+  double weighted_square = 0;
+  const bool footprint_carries = macro_slip_ || step.model == PoseModel::centroid;
+  for (size_t i = 0; i < step.labels.size(); ++i) {
+    if (step.labels[i] == MarkerLabel::outside) continue;
+    const double p = contact::stickProbability(classifier_.lastDrift(static_cast<int>(i)), t_.slip_mm, t_.max_step_mm);
+    step.stick_probability[i] = p;
+    // A marker anchored this frame has told nothing yet about the motion.
+    if (footprint_carries || step.labels[i] != MarkerLabel::stick || classifier_.framesInContact(static_cast<int>(i)) == 0)
+      continue;
+    points.push_back(now.position[i]);
+    weights.push_back(p);
+    weighted_square += p * (now.position[i] - pose_ * classifier_.anchor(static_cast<int>(i))).squaredNorm();
+  }
+  double total = 0;
+  for (double w : weights) total += w;
+  // Per-axis scatter of the stick set about the fit (three axes per marker), never below the noise.
+  const double sigma = std::max(t_.noise_mm, total > 0 ? std::sqrt(weighted_square / (3 * total)) : 0.0);
+  if (step.onset) return;  // the identity, known exactly: sd 0
+  uncertainty_.add(stickInformation(points, weights, pose_ * c0_, sigma, t_.slip_mm), increment,
+                    t_.frame_s);
+  step.sd = uncertainty_.sd();
 }
 
 }  // namespace onetip::pose

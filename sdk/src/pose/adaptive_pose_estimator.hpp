@@ -168,10 +168,15 @@ class AdaptivePoseEstimator {
                                  const MarkerField& now) const;
   void remember(const contact::ContactField& field, const MarkerField& now, const contact::ContactRegion& region);
   Eigen::Isometry3d limitStep(const Eigen::Isometry3d& increment, bool& limited) const;
+  // Per-marker stick probabilities and the pose's sd for this frame (pose/pose_uncertainty.hpp): the
+  // stick set is the stick-labelled markers weighted by their probability; none while the footprint
+  // carries the estimate.
+  void reportUncertainty(const MarkerField& now, const Eigen::Isometry3d& increment, PoseStep& step);
 
   AdaptivePoseOptions options_;
   EstimatorThresholds t_;                    // of the frame being processed
   contact::StickSlipClassifier classifier_;
+  PoseUncertainty uncertainty_;
   bool active_ = false;
   bool macro_slip_ = false;
   int macro_frames_ = 0;                     // frames since macroscopic slip began

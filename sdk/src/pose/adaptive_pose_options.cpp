@@ -20,6 +20,7 @@ void requireIn(double v, double lo, double hi, const char* name, const char* uni
 void AdaptivePoseOptions::validate() const {
   solver.validate();
   self.validate();
+  uncertainty.validate();
   requireIn(slip_sigmas, 3, 1000, "slip_sigmas", "");
   requireIn(robust_sigmas, 1, 1000, "robust_sigmas", "");
   requireIn(rotation_significance, 0, 100, "rotation_significance", "");
@@ -62,6 +63,7 @@ EstimatorThresholds deriveThresholds(const AdaptivePoseOptions& o, const SensorS
   t.confirm_frames = std::max(2, static_cast<int>(std::lround(o.macro_confirm_s / dt)));
   t.max_step_mm = o.max_speed_mm_s * dt;
   t.max_step_rad = o.max_rate_deg_s * dt * kRadPerDeg;
+  t.frame_s = dt;
   return t;
 }
 

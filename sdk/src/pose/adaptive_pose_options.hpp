@@ -28,6 +28,7 @@
 
 #include <cstdint>
 
+#include "pose/pose_uncertainty.hpp"
 #include "pose/sensor_self_model.hpp"
 #include "pose/stick_slip_solver.hpp"
 
@@ -43,6 +44,7 @@ struct AdaptivePoseOptions {
   StickSlipSolverOptions solver;
   ModelPolicy policy = ModelPolicy::adaptive;
   SensorSelfOptions self;                     // priors until the sensor has measured itself
+  PoseUncertaintyOptions uncertainty;         // the motion prior and model error of the reported sd
   double slip_sigmas = 16.7;                  // [3, 1000]
   double robust_sigmas = 8.3;                 // [1, 1000]
   double rotation_significance = 1.0;         // [0, 100] noise sigmas a rotation must reach to be applied
@@ -91,6 +93,7 @@ struct EstimatorThresholds {
   double noise_mm = 0, slip_mm = 0, robust_mm = 0, min_spread_mm = 0, macro_drift_mm = 0, macro_exit_lag_mm = 0;
   int stick_hold_frames = 1, window_frames = 2, confirm_frames = 2;
   double max_step_mm = 0, max_step_rad = 0;
+  double frame_s = 1.0 / 30;  // the frame interval (s)
 };
 
 EstimatorThresholds deriveThresholds(const AdaptivePoseOptions& options, const SensorSelf& self);

@@ -22,6 +22,7 @@
 #include <string>
 
 #include "campaign_score.hpp"
+#include "observable_truth.hpp"
 #include "core/csv_table.hpp"
 #include "rendered_replay.hpp"
 #include "sim/random_scenario.hpp"
@@ -37,6 +38,8 @@ constexpr double kFieldNoisePerGreyMm = 0.0003;
 struct Args {
   int runs = 300, image_runs = 0, image_max_frames = 400;
   unsigned first_seed = 1;
+  std::string parity = "all";  // odd: the seeds tuned on; even: the acceptance set; all
+  pose::PoseUncertaintyOptions uncertainty;  // --sd-relative, --sd-turn, --sd-slide (what the campaign tunes)
   std::string out;  // required for a campaign: no default overwrites the committed table
   long trace = -1;
   std::string trace_scenario;
@@ -47,6 +50,9 @@ struct Args {
 
 constexpr const char* kUsage =
     "usage: pose_campaign --out runs.csv [--runs N] [--image-runs M] [--image-max-frames F] [--first-seed S]\n"
+    "                     [--parity odd|even|all]  (odd seeds to tune on, even seeds to accept on)\n"
+    "                     [--sd-relative F] [--sd-turn DEG_PER_SQRT_S] [--sd-slide MM_PER_SQRT_S]\n"
+    "                     (pose::PoseUncertaintyOptions, for tuning the reported sd on the odd seeds)\n"
     "       pose_campaign (--trace SEED | --trace-scenario FILE.yaml) [--trace-out frames.csv]\n"
     "                     [--trace-noise-mm SIGMA]  (marker noise per axis; the estimator is told it as its prior)\n"
     "                     [--trace-images 1]  (through rendered frames and the real front end instead)\n";
@@ -70,6 +76,10 @@ Args parse(int argc, char** argv) {
     else if (k == "--image-runs") a.image_runs = std::stoi(v);
     else if (k == "--image-max-frames") a.image_max_frames = std::stoi(v);
     else if (k == "--first-seed") a.first_seed = static_cast<unsigned>(std::stoul(v));
+    else if (k == "--parity") a.parity = v;
+    else if (k == "--sd-relative") a.uncertainty.relative_increment_error = std::stod(v);
+    else if (k == "--sd-turn") a.uncertainty.unseen_turn_deg_per_sqrt_s = std::stod(v);
+    else if (k == "--sd-slide") a.uncertainty.unseen_slide_mm_per_sqrt_s = std::stod(v);
     else if (k == "--out") a.out = v;
     else if (k == "--trace") a.trace = std::stol(v);
     else if (k == "--trace-scenario") a.trace_scenario = v;
@@ -79,6 +89,8 @@ Args parse(int argc, char** argv) {
     else usageError("unknown option " + k);
   }
   if (a.out.empty() && a.trace < 0 && a.trace_scenario.empty()) usageError("--out is required for a campaign");
+  if (a.parity != "all" && a.parity != "odd" && a.parity != "even") usageError("--parity must be odd, even or all");
+  a.uncertainty.validate();
   return a;
 }
 
@@ -94,8 +106,13 @@ std::vector<std::string> header() {
   for (const char* axis : {"dx", "dy", "dz", "yaw", "pitch", "roll"}) h.push_back(std::string("max_") + axis);
   for (const char* c : {"longest_excess", "first_excess_frame", "excess_axis", "excess_truth_state", "excess_model",
                         "diverged", "ms_per_frame", "marker_rmse_mm", "stick_precision", "stick_recall",
-                        "excess_true_stick", "gross_slip_turn_deg", "gross_slip_turn_before_excess_deg"})
+                        "excess_true_stick", "gross_slip_turn_deg", "gross_slip_turn_before_excess_deg",
+                        "observable_longest_excess", "observable_diverged", "judged_diverged"})
     h.push_back(c);
+  for (const char* prefix : {"obs_median_", "obs_p95_", "within_2sd_", "median_sd_"})
+    for (const char* axis : {"dx", "dy", "dz", "yaw", "pitch", "roll"}) h.push_back(std::string(prefix) + axis);
+  h.push_back("sd_frames");
+  h.push_back("sd_frames_before_gross_slip");
   return h;
 }
 
@@ -124,6 +141,15 @@ std::vector<std::string> row(const char* level, const sim::RandomConditions& c, 
   r.push_back(std::to_string(s.excess_true_stick));
   r.push_back(num(s.gross_slip_turn_deg));
   r.push_back(num(s.gross_slip_turn_before_excess_deg));
+  r.push_back(std::to_string(s.observable_longest_excess));
+  r.push_back(s.observable_diverged ? "1" : "0");
+  r.push_back(s.judged_diverged ? "1" : "0");
+  for (double v : s.observable_median) r.push_back(num(v));
+  for (double v : s.observable_p95) r.push_back(num(v));
+  for (int v : s.within_two_sd) r.push_back(num(s.sd_frames ? static_cast<double>(v) / s.sd_frames : 0.0));
+  for (double v : s.median_sd_before_gross_slip) r.push_back(num(v));
+  r.push_back(std::to_string(s.sd_frames));
+  r.push_back(std::to_string(s.sd_frames_before_gross_slip));
   return r;
 }
 
@@ -154,6 +180,9 @@ void writeTrace(const std::vector<ReplayFrame>& frames, const std::string& path)
                                 "gt_stick", "stick_true", "regions"};
   for (const char* axis : {"dx", "dy", "dz", "yaw", "pitch", "roll"}) h.push_back(std::string("gt_") + axis);
   for (const char* axis : {"dx", "dy", "dz", "yaw", "pitch", "roll"}) h.push_back(axis);
+  for (const char* axis : {"dx", "dy", "dz", "yaw", "pitch", "roll"}) h.push_back(std::string("sd_") + axis);
+  for (const char* axis : {"dx", "dy", "dz", "yaw", "pitch", "roll"}) h.push_back(std::string("obs_") + axis);
+  const std::vector<Input6> observable = observableTruth(frames);
   CsvWriter out(path, h);
   for (size_t k = 0; k < frames.size(); ++k) {
     const ReplayFrame& f = frames[k];
@@ -171,6 +200,8 @@ void writeTrace(const std::vector<ReplayFrame>& frames, const std::string& path)
                                   std::to_string(countLabelledTrulySticking(f)), std::to_string(f.regions)};
     for (double v : f.gt.asArray()) r.push_back(num(v));
     for (double v : f.raw.asArray()) r.push_back(num(v));
+    for (double v : f.sd.asArray()) r.push_back(num(v));
+    for (double v : observable[k].asArray()) r.push_back(num(v));
     out.row(r);
   }
   out.commit();
@@ -204,13 +235,15 @@ int main(int argc, char** argv) {
   int diverged = 0, image_done = 0;
   for (int i = 0; i < args.runs; ++i) {
     const unsigned seed = args.first_seed + static_cast<unsigned>(i);
+    if ((args.parity == "odd" && seed % 2 == 0) || (args.parity == "even" && seed % 2 == 1)) continue;
     const sim::RandomScenario rs = sim::randomScenario(seed);
     ReplayOptions o;
     o.noise_mm = kFieldNoisePerGreyMm * rs.conditions.noise_grey;
     o.seed = seed;
+    o.tracker.pose.uncertainty = args.uncertainty;
     double ms = 0;
     const RunScore s = scoreRun(runField(record(rs.scenario, o), o.tracker, ms));
-    diverged += s.diverged ? 1 : 0;
+    diverged += s.judged_diverged ? 1 : 0;
     out.row(row("field", rs.conditions, o.noise_mm, s, ms, 0));
     if (image_done < args.image_runs && rs.scenario.defaultFrameCount() <= args.image_max_frames) {
       const RenderedReplay rr = replayRendered(rs.scenario);
@@ -220,7 +253,7 @@ int main(int argc, char** argv) {
       out.row(row("image", rs.conditions, marker_rmse, scoreRun(rr.frames), 0, marker_rmse));
       ++image_done;
     }
-    std::fprintf(stderr, "\rrun %d/%d, diverged %d, image runs %d", i + 1, args.runs, diverged, image_done);
+    std::fprintf(stderr, "\rrun %d/%d, diverged (observable and full) %d, image runs %d", i + 1, args.runs, diverged, image_done);
   }
   std::fprintf(stderr, "\n");
   out.commit();

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "observable_truth.hpp"
+
 namespace onetip::poseval {
 
 bool inWorkingRange(const Input6& g) {
@@ -27,6 +29,67 @@ int countLabelledTrulySticking(const ReplayFrame& f) {
   for (size_t i = 0; i < f.stick.size(); ++i) n += (f.stick[i] && trulySticks(f, i)) ? 1 : 0;
   return n;
 }
+
+namespace {
+
+double percentile(std::vector<double> v, double q) {
+  if (v.empty()) return 0;
+  const size_t k = std::min(v.size() - 1, static_cast<size_t>(q * static_cast<double>(v.size())));
+  std::nth_element(v.begin(), v.begin() + static_cast<long>(k), v.end());
+  return v[k];
+}
+
+bool beyondDivergence(double error, size_t axis) { return std::abs(error) > (axis < 3 ? kDivergenceMm : kDivergenceDeg); }
+
+// Divergence and linear-range errors against the observable truth (observable_truth.hpp).
+void scoreAgainstObservable(const std::vector<ReplayFrame>& frames, RunScore& s) {
+  const std::vector<Input6> reference = observableTruth(frames);
+  std::array<std::vector<double>, 6> linear;
+  int stretch = 0;
+  for (size_t k = 0; k < frames.size(); ++k) {
+    const ReplayFrame& f = frames[k];
+    if (!f.gt_contact || !inWorkingRange(f.gt)) {
+      stretch = 0;
+      continue;
+    }
+    const std::array<double, 6> est = f.contact ? f.raw.asArray() : std::array<double, 6>{};
+    const std::array<double, 6> ref = reference[k].asArray();
+    bool beyond = false;
+    for (size_t a = 0; a < 6; ++a) {
+      beyond = beyond || beyondDivergence(est[a] - ref[a], a);
+      if (inLinearRange(f.gt)) linear[a].push_back(std::abs(est[a] - ref[a]));
+    }
+    stretch = beyond ? stretch + 1 : 0;
+    s.observable_longest_excess = std::max(s.observable_longest_excess, stretch);
+  }
+  s.observable_diverged = s.observable_longest_excess > kDivergenceFrames;
+  s.judged_diverged = s.observable_diverged && s.diverged;
+  for (size_t a = 0; a < 6; ++a) {
+    s.observable_median[a] = percentile(linear[a], 0.5);
+    s.observable_p95[a] = percentile(linear[a], 0.95);
+  }
+}
+
+// The reported sd against the full truth's error.
+void scoreUncertainty(const std::vector<ReplayFrame>& frames, RunScore& s) {
+  std::array<std::vector<double>, 6> sd_before;
+  bool gross_seen = false;
+  for (size_t k = 0; k < frames.size(); ++k) {
+    const ReplayFrame& f = frames[k];
+    if (!f.gt_contact) gross_seen = false;
+    else if (f.gt_state == ContactState::slip) gross_seen = true;
+    if (!f.gt_contact || !f.contact || !inWorkingRange(f.gt)) continue;
+    ++s.sd_frames;
+    const std::array<double, 6> est = f.raw.asArray(), gt = f.gt.asArray(), sd = f.sd.asArray();
+    for (size_t a = 0; a < 6; ++a) s.within_two_sd[a] += std::abs(est[a] - gt[a]) <= 2 * sd[a] ? 1 : 0;
+    if (gross_seen) continue;
+    ++s.sd_frames_before_gross_slip;
+    for (size_t a = 0; a < 6; ++a) sd_before[a].push_back(sd[a]);
+  }
+  for (size_t a = 0; a < 6; ++a) s.median_sd_before_gross_slip[a] = percentile(sd_before[a], 0.5);
+}
+
+}  // namespace
 
 RunScore scoreRun(const std::vector<ReplayFrame>& frames) {
   RunScore s;
@@ -73,7 +136,7 @@ RunScore scoreRun(const std::vector<ReplayFrame>& frames) {
     for (size_t a = 0; a < 6; ++a) {
       const double e = std::abs(est[a] - gt[a]);
       s.max_error[a] = std::max(s.max_error[a], e);
-      if (axis < 0 && e > (a < 3 ? kDivergenceMm : kDivergenceDeg)) axis = static_cast<int>(a);
+      if (axis < 0 && beyondDivergence(e, a)) axis = static_cast<int>(a);
       if (linear) squares[a] += e * e;
     }
     stretch = axis >= 0 ? stretch + 1 : 0;
@@ -100,6 +163,8 @@ RunScore scoreRun(const std::vector<ReplayFrame>& frames) {
   s.gross_slip_turn_before_excess_deg = s.first_excess_frame >= 0
                                             ? turned_by_frame[static_cast<size_t>(s.first_excess_frame)]
                                             : s.gross_slip_turn_deg;
+  scoreAgainstObservable(frames, s);
+  scoreUncertainty(frames, s);
   return s;
 }
 

@@ -60,6 +60,16 @@ struct RunScore {
   double stick_precision = 0, stick_recall = 0;  // of the estimate's stick labels (see above; 0 when undefined)
   double gross_slip_turn_deg = 0;  // the truth's turn while in gross slip (see above)
   double gross_slip_turn_before_excess_deg = 0;  // ... up to first_excess_frame (see above)
+  // Against the observable truth (observable_truth.hpp), over the same frames:
+  int observable_longest_excess = 0;
+  bool observable_diverged = false;      // observable_longest_excess > kDivergenceFrames
+  bool judged_diverged = false;          // diverged against both: a prior that foresaw the unseen turn is not
+  std::array<double, 6> observable_median{}, observable_p95{};  // |error| per axis over the linear-range frames
+  // Honest uncertainty, against the full truth, over the working-range frames where both are in contact:
+  int sd_frames = 0;
+  std::array<int, 6> within_two_sd{};    // frames with |error| <= 2 sd, per axis
+  int sd_frames_before_gross_slip = 0;   // ... of those, before the truth's first gross-slip frame of the contact
+  std::array<double, 6> median_sd_before_gross_slip{};
 };
 
 RunScore scoreRun(const std::vector<ReplayFrame>& frames);

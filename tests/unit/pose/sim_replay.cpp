@@ -49,9 +49,19 @@ ReplayFrame replayFrame(const sim::GroundTruthFrame& f, const input::TrackerResu
   out.gt = f.input;
   out.gt_contact_markers = f.contact;
   out.gt_slip = f.slip;
+  Eigen::Vector2d sum{0, 0};
+  int touching = 0;
+  for (size_t i = 0; i < f.contact.size() && i < f.markers.position.size(); ++i)
+    if (f.contact[i]) {
+      sum += f.markers.position[i].head<2>();
+      ++touching;
+    }
+  out.gt_footprint_valid = touching > 0;
+  if (touching > 0) out.gt_footprint = sum / touching;
   out.contact = r.contact;
   out.state = r.state;
   out.raw = r.raw;
+  out.sd = r.sd;
   out.composed = r.composed;
   out.euler_sum = r.euler_sum;
   out.out_of_range = r.out_of_range;

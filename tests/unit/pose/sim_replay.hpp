@@ -35,10 +35,13 @@ struct ReplayFrame {
   ContactState gt_state = ContactState::none;
   Input6 gt;
   std::vector<std::uint8_t> gt_contact_markers, gt_slip;
+  Eigen::Vector2d gt_footprint{0, 0};  // S.x, S.y centroid of the markers whose nodes touch (true positions, mm)
+  bool gt_footprint_valid = false;     // some marker touches
   // estimate
   bool contact = false;
   ContactState state = ContactState::none;
   Input6 raw, composed, euler_sum;
+  Input6 sd;  // the estimate's standard deviations (mm, deg)
   std::vector<std::uint8_t> region, slip, stick;  // primary region members, markers labelled slip, stick
   int regions = 0;
   bool out_of_range = false;
