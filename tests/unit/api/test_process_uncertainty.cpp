@@ -67,7 +67,9 @@ TEST_F(ProcessUncertainty, PoseCsvHoldsTheSdOfTheSameFrameFromTheCppApi) {
     for (size_t k = 0; k < 6; ++k) {
       EXPECT_NEAR(cell(row, kHeader[3 + k]), raw[k], 1e-6) << kHeader[3 + k];
       EXPECT_NEAR(cell(row, kHeader[9 + k]), sd[k], 1e-6) << kHeader[9 + k];
-      if (!r.contact) EXPECT_EQ(cell(row, kHeader[9 + k]), 0.0) << kHeader[9 + k] << " out of contact";
+      if (!r.contact) {
+        EXPECT_EQ(cell(row, kHeader[9 + k]), 0.0) << kHeader[9 + k] << " out of contact";
+      }
     }
   }
   EXPECT_GT(contact_rows, 20) << "the scenario must press the pad";
