@@ -79,7 +79,8 @@ class CUncertainty : public ::testing::Test {
     int32_t finished = 0, got = 0;
     ASSERT_EQ(onetip_sensor_wait_finished(s, 240, &finished, &err), ONETIP_OK) << err.message;
     // The poll queues hold the same values as the callbacks saw.
-    for (onetip_event_sd e; onetip_sensor_poll_event_sd(s, &e, &got, &err) == ONETIP_OK && got;) polled_events_.push_back(e);
+    for (onetip_event_sd e; onetip_sensor_poll_event_sd(s, &e, &got, &err) == ONETIP_OK && got;)
+      polled_events_.push_back(e);
     std::vector<onetip_marker_sd> m(4096);
     int32_t count = 0;
     for (onetip_frame_sd f; onetip_sensor_poll_frame_sd(s, &f, m.data(), static_cast<int32_t>(m.size()), &count, &got,

@@ -27,8 +27,8 @@ bool waitForEvent(Sensor& sensor, Event& e, double timeout);
 void requireArgument(const void* p, const char* call, const char* what);
 
 template <typename CEvent, typename Convert>
-std::int32_t pollEventInto(onetip_sensor* sensor, CEvent* out, std::int32_t* got, onetip_error* error,
-                           const char* call, Convert convert) noexcept {
+std::int32_t pollEventInto(onetip_sensor* sensor, CEvent* out, std::int32_t* got, onetip_error* error, const char* call,
+                           Convert convert) noexcept {
   if (got) *got = 0;
   return boundary(error, [&] {
     requireArgument(out, call, "out");
@@ -42,8 +42,8 @@ std::int32_t pollEventInto(onetip_sensor* sensor, CEvent* out, std::int32_t* got
 }
 
 template <typename CEvent, typename Convert>
-std::int32_t waitEventInto(onetip_sensor* sensor, double timeout_s, CEvent* out, std::int32_t* got,
-                           onetip_error* error, const char* call, Convert convert) noexcept {
+std::int32_t waitEventInto(onetip_sensor* sensor, double timeout_s, CEvent* out, std::int32_t* got, onetip_error* error,
+                           const char* call, Convert convert) noexcept {
   if (got) *got = 0;
   return boundary(error, [&] {
     requireArgument(out, call, "out");

@@ -23,11 +23,12 @@ ONETIP_C_API int32_t onetip_sensor_wait_event_sd(onetip_sensor* sensor, double t
                        [](const Event& e) { return toCWithSd(e); });
 }
 
-ONETIP_C_API int32_t onetip_sensor_poll_frame_sd(onetip_sensor* sensor, onetip_frame_sd* out,
-                                                 onetip_marker_sd* markers, int32_t capacity, int32_t* marker_count,
-                                                 int32_t* got, onetip_error* error) {
-  return pollFrameInto(sensor, out, markers, capacity, marker_count, got, error, "onetip_sensor_poll_frame_sd",
-                       [](const FrameResult& f) { return toCWithSd(f); }, markersWithSdToC);
+ONETIP_C_API int32_t onetip_sensor_poll_frame_sd(onetip_sensor* sensor, onetip_frame_sd* out, onetip_marker_sd* markers,
+                                                 int32_t capacity, int32_t* marker_count, int32_t* got,
+                                                 onetip_error* error) {
+  return pollFrameInto(
+      sensor, out, markers, capacity, marker_count, got, error, "onetip_sensor_poll_frame_sd",
+      [](const FrameResult& f) { return toCWithSd(f); }, markersWithSdToC);
 }
 
 ONETIP_C_API int32_t onetip_sensor_set_event_sd_callback(onetip_sensor* sensor, onetip_event_sd_callback callback,
@@ -37,8 +38,8 @@ ONETIP_C_API int32_t onetip_sensor_set_event_sd_callback(onetip_sensor* sensor, 
 
 ONETIP_C_API int32_t onetip_sensor_set_frame_sd_callback(onetip_sensor* sensor, onetip_frame_sd_callback callback,
                                                          void* user, onetip_error* error) {
-  return setFrameCallbackTo(sensor, callback, user, error, [](const FrameResult& f) { return toCWithSd(f); },
-                            markersWithSdToC);
+  return setFrameCallbackTo(
+      sensor, callback, user, error, [](const FrameResult& f) { return toCWithSd(f); }, markersWithSdToC);
 }
 
 }  // extern "C"

@@ -18,8 +18,8 @@ namespace onetip {
 namespace {
 
 const std::string kScenario = std::string(onetip::test::sourceDir()) + "/samples/scenarios/press.yaml";
-const std::vector<std::string> kHeader{"frame", "contact", "state",  "dx",    "dy",       "dz",      "yaw",  "pitch",
-                                       "roll",  "sd_dx",   "sd_dy",  "sd_dz", "sd_yaw",   "sd_pitch", "sd_roll"};
+const std::vector<std::string> kHeader{"frame", "contact", "state", "dx",    "dy",     "dz",       "yaw",    "pitch",
+                                       "roll",  "sd_dx",   "sd_dy", "sd_dz", "sd_yaw", "sd_pitch", "sd_roll"};
 
 // pose.csv of `onetip process` and the C++ API's results, frame by frame, for the scenario.
 class ProcessUncertainty : public ::testing::Test {
