@@ -12,6 +12,7 @@
 #include "contact_sheet.hpp"
 #include "core/csv_table.hpp"
 #include "core/error.hpp"
+#include "core/pose_csv.hpp"
 #include "interrupt.hpp"
 #include "pipeline/frame_processor.hpp"
 #include "sim/simulator.hpp"
@@ -33,8 +34,8 @@ int runDemo(const Args& args) {
   std::filesystem::create_directories(out, ec);
   if (ec) throw InputError(out.string() + ": cannot create the folder (" + ec.message() + ")");
   pipeline::FrameProcessor processor(sim.calibration(), sim.pattern());
-  CsvWriter est((out / "est_pose.csv").string(), {"frame", "contact", "state", "dx", "dy", "dz", "yaw", "pitch", "roll"});
-  CsvWriter truth((out / "gt_pose.csv").string(), {"frame", "contact", "state", "dx", "dy", "dz", "yaw", "pitch", "roll"});
+  CsvWriter est((out / "est_pose.csv").string(), poseCsvHeader(true));
+  CsvWriter truth((out / "gt_pose.csv").string(), poseCsvHeader(false));
   ContactSheet sheet(sim.frameCount());
   double sq[6] = {0, 0, 0, 0, 0, 0};
   int both = 0;
@@ -46,13 +47,8 @@ int runDemo(const Args& args) {
     const pipeline::FrameResult r = processor.process(frame, f.t);
     const Input6 e = r.pose.raw;
     const bool contact = r.status == pipeline::FrameStatus::ok && r.pose.contact;
-    auto row = [&](bool c, ContactState s, const Input6& v) {
-      return std::vector<std::string>{std::to_string(f.index), c ? "1" : "0", std::string(toString(c ? s : ContactState::none)),
-                                      formatNumber(v.dx), formatNumber(v.dy), formatNumber(v.dz), formatNumber(v.yaw),
-                                      formatNumber(v.pitch), formatNumber(v.roll)};
-    };
-    est.row(row(contact, r.pose.state, e));
-    truth.row(row(f.in_contact, f.state, f.input));
+    est.row(poseCsvRow(f.index, contact, r.pose.state, e, r.pose.sd));
+    truth.row(poseCsvRow(f.index, f.in_contact, f.state, f.input));
     if (contact && f.in_contact) {
       const auto a = e.asArray(), b = f.input.asArray();
       for (int i = 0; i < 6; ++i) sq[i] += (a[i] - b[i]) * (a[i] - b[i]);

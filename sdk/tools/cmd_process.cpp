@@ -10,6 +10,7 @@
 #include "command.hpp"
 #include "core/csv_table.hpp"
 #include "core/error.hpp"
+#include "core/pose_csv.hpp"
 #include "interrupt.hpp"
 #include "output_paths.hpp"
 #include "pipeline/frame_processor.hpp"
@@ -19,14 +20,6 @@ namespace onetip::tools {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-std::vector<std::string> poseRow(std::int64_t frame, const pipeline::FrameResult& r) {
-  const input::TrackerResult& p = r.pose;
-  const Input6& v = p.raw;
-  return {std::to_string(frame), p.contact ? "1" : "0", std::string(toString(p.contact ? p.state : ContactState::none)),
-          formatNumber(v.dx), formatNumber(v.dy), formatNumber(v.dz), formatNumber(v.yaw), formatNumber(v.pitch),
-          formatNumber(v.roll)};
-}
 
 int runProcess(const Args& args) {
   refuseOutputClashes(args, {"out", "markers", "timing"}, {"calib", "pattern", "reference", "input"});
@@ -43,7 +36,7 @@ int runProcess(const Args& args) {
     if (r.status != pipeline::FrameStatus::reference) throw InputError("--reference " + *ref + ": " + r.message);
   }
 
-  CsvWriter pose(args.get("out"), {"frame", "contact", "state", "dx", "dy", "dz", "yaw", "pitch", "roll"});
+  CsvWriter pose(args.get("out"), poseCsvHeader(true));
   std::unique_ptr<CsvWriter> markers, timing;
   if (auto p = args.optional("markers")) markers = std::make_unique<CsvWriter>(*p, std::vector<std::string>{"frame", "id", "x", "y", "z"});
   if (auto p = args.optional("timing")) timing = std::make_unique<CsvWriter>(*p, std::vector<std::string>{"frame", "stage", "ms"});
@@ -80,7 +73,7 @@ int runProcess(const Args& args) {
       continue;
     }
     ++processed;
-    pose.row(poseRow(frame.index, r));
+    pose.row(poseCsvRow(frame.index, r.pose.contact, r.pose.state, r.pose.raw, r.pose.sd));
     const std::string k = std::to_string(frame.index);
     if (markers)
       for (int id = 0; id < r.markers.size(); ++id)
@@ -127,7 +120,7 @@ const CommandRegistrar reg{{
     {{"calib", "calibration file (docs/reference.md); optional for sim: sources", false, false},
      {"pattern", "marker pattern file; optional for sim: sources", false, false},
      {"input", "frames: a folder of PNGs, a video file, v4l2:/dev/videoN or sim:SCENARIO.yaml", false, true},
-     {"out", "pose.csv to write: frame,contact,state,dx,dy,dz,yaw,pitch,roll", false, true},
+     {"out", "pose.csv to write: frame,contact,state,dx,dy,dz,yaw,pitch,roll,sd_dx,sd_dy,sd_dz,sd_yaw,sd_pitch,sd_roll", false, true},
      {"markers", "markers.csv to write: frame,id,x,y,z (S, mm)", false, false},
      {"reference", "rest-state image (default: the first frame)", false, false},
      {"timing", "timing.csv to write: frame,stage,ms", false, false},

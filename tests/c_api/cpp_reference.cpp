@@ -1,6 +1,6 @@
 // The C++ API's answer for the C ABI test: runs a scenario through
 // onetip::Sensor (lossless, every frame) and writes every event as a CSV row
-//   frame,type,dx,dy,dz,yaw,pitch,roll
+//   frame,type,dx,dy,dz,yaw,pitch,roll,sd_dx,sd_dy,sd_dz,sd_yaw,sd_pitch,sd_roll
 // (%.17g, so the C side can compare exactly). Usage: cpp_reference SRC OUT.csv
 #include <cstdio>
 #include <onetip/sensor.hpp>
@@ -19,12 +19,13 @@ int main(int argc, char** argv) {
     sensor.waitFinished();
     std::FILE* out = std::fopen(argv[2], "w");
     if (!out) return 1;
-    std::fprintf(out, "frame,type,dx,dy,dz,yaw,pitch,roll\n");
+    std::fprintf(out, "frame,type,dx,dy,dz,yaw,pitch,roll,sd_dx,sd_dy,sd_dz,sd_yaw,sd_pitch,sd_roll\n");
     onetip::Event e;
     while (sensor.pollEvent(e)) {
-      const onetip::Input6& v = e.input;
-      std::fprintf(out, "%lld,%d,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n", static_cast<long long>(e.frame),
-                   static_cast<int>(e.type), v.dx, v.dy, v.dz, v.yaw, v.pitch, v.roll);
+      std::fprintf(out, "%lld,%d", static_cast<long long>(e.frame), static_cast<int>(e.type));
+      for (const onetip::Input6& v : {e.input, e.sd})
+        for (double x : v.asArray()) std::fprintf(out, ",%.17g", x);
+      std::fprintf(out, "\n");
     }
     return std::fclose(out) == 0 ? 0 : 1;
   } catch (const onetip::Error& e) {

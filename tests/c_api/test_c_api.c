@@ -1,6 +1,7 @@
 /* End-to-end test of the C ABI, written in C11: the simulated sensor through
  * onetip_c.h, compared with the C++ API's events for the same frames (a CSV
- * written by cpp_reference), and bad input at every boundary.
+ * written by cpp_reference; the poll queue read through the uncertainty form of
+ * minor version 2, whose sd must equal the C++ Event::sd), and bad input at every boundary.
  * Usage: test_c_api SCENARIO.yaml REFERENCE.csv WORK_DIR */
 #include <math.h>
 #include <stdio.h>
@@ -14,6 +15,7 @@
 #define MAX_EVENTS 4096
 typedef struct collected {
   onetip_event events[MAX_EVENTS];
+  double sd[MAX_EVENTS][6]; /* the same events' sd, taken from the poll queue */
   int count;
   int frames_seen;
   int markers_valid_last; /* valid markers in the last frame callback */
@@ -42,6 +44,7 @@ typedef struct reference_row {
   long long frame;
   int type;
   double v[6];
+  double sd[6];
 } reference_row;
 
 static int load_reference(const char* path, reference_row* rows, int max_rows) {
@@ -55,8 +58,9 @@ static int load_reference(const char* path, reference_row* rows, int max_rows) {
   }
   while (n < max_rows && fgets(line, sizeof line, f)) {
     reference_row* r = &rows[n];
-    if (sscanf(line, "%lld,%d,%lf,%lf,%lf,%lf,%lf,%lf", &r->frame, &r->type, &r->v[0], &r->v[1], &r->v[2], &r->v[3],
-               &r->v[4], &r->v[5]) == 8)
+    if (sscanf(line, "%lld,%d,%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf", &r->frame, &r->type, &r->v[0],
+               &r->v[1], &r->v[2], &r->v[3], &r->v[4], &r->v[5], &r->sd[0], &r->sd[1], &r->sd[2], &r->sd[3],
+               &r->sd[4], &r->sd[5]) == 14)
       ++n;
   }
   fclose(f);
@@ -85,12 +89,15 @@ static void test_end_to_end(const char* scenario, const char* reference_csv) {
   CHECK(onetip_sensor_wait_finished(sensor, 120.0, &finished, &err) == ONETIP_OK && finished == 1, "finished %d %s",
         finished, err.message);
 
-  /* the poll queue saw the same events as the callback, in the same order */
+  /* the poll queue saw the same events as the callback, in the same order; its uncertainty form
+   * (minor version 2) holds the plain event first */
   {
-    onetip_event e;
+    onetip_event_sd e;
     int32_t have = 0, i = 0, same = 1;
-    while (onetip_sensor_poll_event(sensor, &e, &have, &err) == ONETIP_OK && have) {
-      if (i >= got.count || e.frame != got.events[i].frame || e.type != got.events[i].type) same = 0;
+    CHECK(onetip_abi_minor_version() >= 2, "minor version %u", onetip_abi_minor_version());
+    while (onetip_sensor_poll_event_sd(sensor, &e, &have, &err) == ONETIP_OK && have) {
+      if (i >= got.count || memcmp(&e.event, &got.events[i], sizeof e.event) != 0) same = 0;
+      if (i < MAX_EVENTS) memcpy(got.sd[i], e.sd, sizeof e.sd);
       ++i;
     }
     CHECK(same && i == got.count, "poll queue: %d events, callback: %d", i, got.count);
@@ -126,14 +133,14 @@ static void test_end_to_end(const char* scenario, const char* reference_csv) {
       ++compared;
       if (ref[i].frame != e->frame || ref[i].type != e->type) continue;
       double d = 0;
-      for (int k = 0; k < 6; ++k) d = fmax(d, fabs(ref[i].v[k] - e->input[k]));
+      for (int k = 0; k < 6; ++k) d = fmax(d, fmax(fabs(ref[i].v[k] - e->input[k]), fabs(ref[i].sd[k] - got.sd[i][k])));
       worst = fmax(worst, d);
       if (d <= 1e-12) ++matched;
     }
-    CHECK(compared > 10 && matched == compared, "%d of %d input events match the C++ API (worst difference %g)",
-          matched, compared, worst);
-    printf("end to end: %d events, %d input events all equal to the C++ API's (worst difference %g)\n", got.count,
-           compared, worst);
+    CHECK(compared > 10 && matched == compared,
+          "%d of %d input events (input and sd) match the C++ API (worst difference %g)", matched, compared, worst);
+    printf("end to end: %d events, %d input events (input and sd) all equal to the C++ API's (worst difference %g)\n",
+           got.count, compared, worst);
   }
 }
 

@@ -2,7 +2,8 @@
 // press end to end, compared frame by frame with `onetip process` (the C++
 // pipeline) on the same scenario, bad input at the boundary, and the option
 // table (OptionsTests.cs).
-// Usage: mono OnetipTests.exe SCENARIO.yaml POSE.csv MARKERS.csv WORK_DIR, or OnetipTests.exe options
+// Usage: mono OnetipTests.exe SCENARIO.yaml POSE.csv MARKERS.csv WORK_DIR, or OnetipTests.exe options,
+// or OnetipTests.exe uncertainty-in-contact SCENARIO.yaml (UncertaintyTests.cs)
 using System;
 using System.Collections.Generic;
 using System.IO;
@@ -23,8 +24,14 @@ namespace Onetip.Tests
                 Console.WriteLine(Check.Failures == 0 ? "all option checks passed" : Check.Failures + " checks failed");
                 return Check.Failures == 0 ? 0 : 1;
             }
+            if (args.Length == 2 && args[0] == "uncertainty-in-contact") {  // needs the estimator's uncertainty
+                UncertaintyTests.InContact(args[1]);
+                Console.WriteLine(Check.Failures == 0 ? "all uncertainty checks passed" : Check.Failures + " checks failed");
+                return Check.Failures == 0 ? 0 : 1;
+            }
             if (args.Length != 4) {
-                Console.Error.WriteLine("usage: OnetipTests.exe SCENARIO.yaml POSE.csv MARKERS.csv WORK_DIR | options");
+                Console.Error.WriteLine("usage: OnetipTests.exe SCENARIO.yaml POSE.csv MARKERS.csv WORK_DIR | options | " +
+                                        "uncertainty-in-contact SCENARIO.yaml");
                 return 2;
             }
             Console.WriteLine("onetip " + Sensor.LibraryVersion + ", C ABI " + Sensor.LibraryAbiVersion);
@@ -105,6 +112,7 @@ namespace Onetip.Tests
                 CompareMarkers(f, reference.Markers[f.Frame]);
             }
             Check.That(stats.FramesProcessed == reference.Pose.Count && stats.FramesDropped == 0, "every frame processed, none dropped");
+            UncertaintyTests.AgainstTheReference(reference, polled, fromCallback, processed);
         }
 
         static void CompareInput(Input6 got, double[] expected, string what)

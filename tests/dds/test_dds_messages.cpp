@@ -76,6 +76,18 @@ TEST(DdsMessages, PoseIsTheConventionsMotionInMetresAndAUnitQuaternion) {
   EXPECT_LT((got.toRotationMatrix() - want).norm(), 1e-12);
 }
 
+TEST(DdsMessages, PoseCovarianceIsTheSdSquaredOnTheDiagonalInRosUnitsAndAxisOrder) {
+  const Input6 sd{0.1, 0.2, 0.3, 1.0, 2.0, 3.0};  // mm; yaw, pitch, roll in degrees
+  const auto c = dds::poseCovariance(sd);
+  const double d = M_PI / 180;
+  // ROS: x, y, z, then the rotations about X (pitch), Y (roll) and Z (yaw).
+  const std::array<double, 6> want{1e-4, 2e-4, 3e-4, 2 * d, 3 * d, 1 * d};
+  for (size_t i = 0; i < 6; ++i)
+    for (size_t j = 0; j < 6; ++j)
+      EXPECT_NEAR(c[6 * i + j], i == j ? want[i] * want[i] : 0.0, 1e-18) << i << "," << j;
+  for (double v : dds::poseCovariance(Input6{})) EXPECT_EQ(v, 0.0);
+}
+
 TEST(DdsMessages, MarkerCloudHoldsValidMarkersWithTheirIdsLabelsAndDisplacements) {
   pipeline::FrameResult r;
   r.markers = MarkerField(2, 3);
@@ -89,6 +101,8 @@ TEST(DdsMessages, MarkerCloudHoldsValidMarkersWithTheirIdsLabelsAndDisplacements
   r.pose.field.valid[4] = 1;
   r.pose.step.labels.assign(6, contact::MarkerLabel::outside);
   r.pose.step.labels[4] = contact::MarkerLabel::slip;
+  r.pose.step.stick_probability.assign(6, 0.0);
+  r.pose.step.stick_probability[4] = 0.25;
   const dds::MarkerCloud c = dds::markerCloud(r);
   ASSERT_EQ(c.width, 2u);
   ASSERT_EQ(c.data.size(), 2 * dds::kMarkerPointStep);
@@ -109,7 +123,11 @@ TEST(DdsMessages, MarkerCloudHoldsValidMarkersWithTheirIdsLabelsAndDisplacements
   EXPECT_NEAR(f64(1, 24), 0.0005, 1e-15);  // |(0.3, 0, -0.4)| mm
   EXPECT_EQ(u32(1, 32), 4u);
   EXPECT_EQ(c.data[dds::kMarkerPointStep + 36], 2);  // slip
+  EXPECT_EQ(f64(0, 40), 0.0);
+  EXPECT_EQ(f64(1, 40), 0.25);  // stick probability
   for (const auto& f : dds::markerCloudFields()) EXPECT_LT(f.offset, dds::kMarkerPointStep);
+  EXPECT_STREQ(dds::markerCloudFields().back().name, "stick_probability");
+  EXPECT_EQ(dds::markerCloudFields().back().datatype, dds::kPointFieldFloat64);
 }
 
 TEST(DdsNames, TopicsFollowRos2Mapping) {

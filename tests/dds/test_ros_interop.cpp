@@ -1,7 +1,9 @@
 // tests/dds/test_ros_interop.cpp — `onetip publish` (Cyclone DDS) read by an
 // independent ROS 2-style subscriber on Fast DDS (ros_topic_recorder, built
 // from the IDL only) gives the values `onetip process` writes for the same
-// scenario: the 6-D input (Joy, PoseStamped), the markers (PointCloud2) and
+// scenario: the 6-D input (Joy, PoseStamped), its uncertainty
+// (PoseWithCovarianceStamped, from pose.csv's sd columns), the markers
+// (PointCloud2, their stick probability from the C++ API's FrameResult) and
 // the events, which are re-derived here from pose.csv. Over the loopback,
 // between two network namespaces joined by a veth pair, and over that pair
 // with half of the sends to the data ports refused by an nftables rule.
@@ -19,6 +21,7 @@
 #include <sstream>
 
 #include "child_process.hpp"
+#include "onetip/sensor.hpp"
 #include "scratch_dir.hpp"
 #include "veth_namespaces.hpp"
 #include "test_paths.hpp"
@@ -50,6 +53,7 @@ struct PoseRow {
   int contact;
   std::string state;
   std::array<double, 6> v;
+  std::array<double, 6> sd;  // sd_dx .. sd_roll
 };
 
 // The SensorOptions working range (onetip/sensor_option_table.hpp defaults;
@@ -105,12 +109,26 @@ class RosInterop : public ::testing::Test {
                             dir_.file("pose.csv") + " --markers " + dir_.file("markers.csv") + " --quiet";
     ChildProcess process(cmd, dir_.file("process.log"));
     ASSERT_EQ(process.wait(180), 0) << process.log();
-    for (const auto& r : readCsv(dir_.file("pose.csv")))
-      pose_[std::stoi(r[0])] = {std::stoi(r[1]), r[2], {std::stod(r[3]), std::stod(r[4]), std::stod(r[5]),
-                                                       std::stod(r[6]), std::stod(r[7]), std::stod(r[8])}};
+    for (const auto& r : readCsv(dir_.file("pose.csv"))) {
+      ASSERT_EQ(r.size(), 15u) << "pose.csv: the 6-D input and its sd";
+      PoseRow& row = pose_[std::stoi(r[0])];
+      row.contact = std::stoi(r[1]);
+      row.state = r[2];
+      for (size_t i = 0; i < 6; ++i) row.v[i] = std::stod(r[3 + i]), row.sd[i] = std::stod(r[9 + i]);
+    }
     for (const auto& r : readCsv(dir_.file("markers.csv")))
       markers_[std::stoi(r[0])][std::stoi(r[1])] = {std::stod(r[2]), std::stod(r[3]), std::stod(r[4])};
     std::ofstream(dir_.file("options.yaml")) << "lossless: 1\n";  // every frame, as `onetip process`
+    // The markers' stick probability, which no CSV of `onetip process` holds: the C++ API's, frame by frame.
+    onetip::SensorOptions options;
+    options.lossless = true;
+    onetip::Sensor sensor(onetip::SensorConfig("sim:" + kScenario, "", "", ""), options);
+    sensor.onFrame([this](const onetip::FrameResult& f) {
+      for (size_t id = 0; id < f.markers.size(); ++id) stick_[static_cast<int>(f.frame)][static_cast<int>(id)] =
+          f.markers[id].stick_probability;
+    });
+    sensor.start();
+    ASSERT_TRUE(sensor.waitFinished(180));
   }
 
   // Runs the recorder (prefix: where it runs) and the publisher, then checks what arrived.
@@ -237,10 +255,51 @@ class RosInterop : public ::testing::Test {
       EXPECT_EQ(r[8], frame_id_);
     }
 
-    // PointCloud2: the markers of markers.csv (mm) in metres, same ids.
+    // PoseWithCovarianceStamped: the PoseStamped of the same frame (stamp, pose,
+    // frame_id), and a diagonal covariance of pose.csv's sd: x, y, z in m², the
+    // rotations about X (pitch), Y (roll), Z (yaw) in rad².
+    std::map<double, std::vector<std::string>> pose_by_stamp;
+    for (const auto& r : pose) pose_by_stamp[std::stod(r[0])] = r;
+    const auto pose_cov = readCsv(out + "/pose_cov.csv");
+    EXPECT_GE(static_cast<double>(pose_cov.size()), min_share * static_cast<double>(frames));
+    int with_pose = 0;
+    for (const auto& r : pose_cov) {
+      ASSERT_EQ(r.size(), 45u);
+      const int f = frameOf(std::stod(r[0]));
+      ASSERT_TRUE(pose_.count(f));
+      EXPECT_EQ(r[44], frame_id_);
+      if (pose_by_stamp.count(std::stod(r[0]))) {
+        ++with_pose;
+        for (size_t i = 1; i < 8; ++i) EXPECT_EQ(r[i], pose_by_stamp[std::stod(r[0])][i]) << "frame " << f << " column " << i;
+      }
+      const auto& sd = pose_[f].sd;
+      const double d = M_PI / 180.0;
+      const std::array<double, 6> want{sd[0] * 1e-3, sd[1] * 1e-3, sd[2] * 1e-3, sd[4] * d, sd[5] * d, sd[3] * d};
+      for (size_t i = 0; i < 6; ++i)
+        for (size_t j = 0; j < 6; ++j) {
+          const double c = std::stod(r[8 + 6 * i + j]);
+          if (i != j) {
+            EXPECT_EQ(c, 0.0) << "frame " << f << " covariance " << i << "," << j;
+            continue;
+          }
+          const double unit = i < 3 ? 1e-3 : d;  // pose.csv's sd carries 6 decimals of mm or deg
+          EXPECT_NEAR(c, want[i] * want[i], 2 * want[i] * unit * 1e-6 + unit * unit * 1e-12)
+              << "frame " << f << " variance " << i;
+        }
+    }
+    EXPECT_GT(with_pose, 0) << "no PoseWithCovarianceStamped shares its stamp with a PoseStamped";
+    received_["pose_with_covariance"] = pose_cov.size();
+
+    // PointCloud2: the markers of markers.csv (mm) in metres, same ids; their
+    // stick probability that of the C++ API's FrameResult.
     std::map<int, std::map<int, std::array<double, 3>>> cloud;
-    for (const auto& r : readCsv(out + "/markers.csv"))
-      cloud[frameOf(std::stod(r[0]))][std::stoi(r[1])] = {std::stod(r[2]), std::stod(r[3]), std::stod(r[4])};
+    for (const auto& r : readCsv(out + "/markers.csv")) {
+      ASSERT_EQ(r.size(), 8u);
+      const int f = frameOf(std::stod(r[0])), id = std::stoi(r[1]);
+      cloud[f][id] = {std::stod(r[2]), std::stod(r[3]), std::stod(r[4])};
+      ASSERT_TRUE(stick_.count(f) && stick_[f].count(id)) << "frame " << f << " id " << id;
+      EXPECT_EQ(std::stod(r[7]), stick_[f][id]) << "stick probability, frame " << f << " id " << id;
+    }
     std::printf("markers: %zu of %zu frames received\n", cloud.size(), frames);
     EXPECT_GE(static_cast<double>(cloud.size()), min_share * static_cast<double>(frames));
     received_["markers"] = cloud.size();
@@ -279,6 +338,7 @@ class RosInterop : public ::testing::Test {
   std::string frame_id_;
   std::map<std::string, size_t> received_;  // samples per best-effort topic (one per frame sent)
   std::map<int, PoseRow> pose_;
+  std::map<int, std::map<int, double>> stick_;  // frame -> marker id -> stick probability (C++ API)
   std::map<int, std::map<int, std::array<double, 3>>> markers_;
 };
 
@@ -299,7 +359,7 @@ TEST_F(RosInterop, FastDdsSubscriberInAnotherNetworkNamespaceGetsWhatProcessWrit
 // EPERM, and Cyclone DDS 0.10 tries each datagram up to three times
 // (ddsi_udp_conn_write), so a best-effort sample, one datagram each here, is
 // lost only when all three sends are refused: p^3 = 12.5 % of the samples, not
-// p = 50 %. Checked: the rule refused p of the sends and the four best-effort
+// p = 50 %. Checked: the rule refused p of the sends and the five best-effort
 // topics lost p^3 of their samples (each within 4 binomial standard
 // deviations), every sample that arrived equals pose.csv / markers.csv, and
 // every event arrived (reliable: resent). docs/dds/README.md has the measurements.
@@ -319,8 +379,8 @@ TEST_F(RosInterop, RefusedSendsLoseTheCubeOfTheDropRateAndNoEvent) {
   const double refused = static_cast<double>(counts.dropped) / sends;
   EXPECT_NEAR(refused, p, 4 * std::sqrt(p * (1 - p) / sends)) << "the rule does not refuse p of the sends";
 
-  ASSERT_EQ(received_.size(), 4u);
-  const double samples = 4.0 * static_cast<double>(pose_.size());  // one per frame and topic
+  ASSERT_EQ(received_.size(), 5u);
+  const double samples = 5.0 * static_cast<double>(pose_.size());  // one per frame and topic
   const double arrived = static_cast<double>(
       std::accumulate(received_.begin(), received_.end(), size_t{0}, [](size_t a, const auto& kv) { return a + kv.second; }));
   const double q = p * p * p, lost = samples - arrived;

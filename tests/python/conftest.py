@@ -2,11 +2,13 @@
 
 The environment (set by the ctest `python_bindings`, tests/python/CMakeLists.txt):
 ONETIP_PYTHON_MODULE (the module built by this build), ONETIP_CLI (the `onetip`
-program, the C++ reference) and ONETIP_SOURCE_DIR (the repository).
+program, the C++ reference) and ONETIP_SOURCE_DIR (the repository). `press` is
+one lossless run of the press scenario, shared by the test files.
 """
 import csv
 import os
 import subprocess
+import threading
 from pathlib import Path
 
 import numpy as np
@@ -60,6 +62,11 @@ class CliReference:
         r = self.pose[frame]
         return np.array([float(r[k]) for k in ("dx", "dy", "dz", "yaw", "pitch", "roll")])
 
+    def sd(self, frame):
+        """pose.csv's sd_dx .. sd_roll of the frame (mm, deg)."""
+        r = self.pose[frame]
+        return np.array([float(r["sd_" + k]) for k in ("dx", "dy", "dz", "yaw", "pitch", "roll")])
+
     def contact_frames(self):
         return sorted(f for f, r in self.pose.items() if r["contact"] == "1")
 
@@ -75,3 +82,34 @@ def cli_reference(press_scenario, tmp_path_factory):
                    check=True, timeout=240)
     with open(pose, newline="") as p, open(markers, newline="") as m:
         return CliReference(list(csv.DictReader(p)), list(csv.DictReader(m)))
+
+
+class PressRun:
+    """One lossless run of the press scenario: events through a callback and
+    through wait_event() at the same time, then every frame result."""
+
+    def __init__(self, scenario):
+        options = onetip.SensorOptions(lossless=True, event_queue_capacity=100000, frame_queue_capacity=1000)
+        self.callback_events, self.callback_threads = [], set()
+        self.polled_events, self.frames = [], []
+        with onetip.Sensor(f"sim:{scenario}", options=options) as sensor:
+            sensor.on_event(self._on_event)
+            sensor.start()
+            while (event := sensor.wait_event(5.0)) is not None:
+                self.polled_events.append(event)
+            assert sensor.wait_finished(60.0)
+            while (frame := sensor.poll_frame()) is not None:
+                self.frames.append(frame)
+            self.stats = sensor.stats()
+
+    def _on_event(self, event):
+        self.callback_threads.add(threading.get_ident())
+        self.callback_events.append(event)
+
+    def of_type(self, kind):
+        return [e for e in self.polled_events if e.type == kind]
+
+
+@pytest.fixture(scope="session")
+def press(press_scenario):
+    return PressRun(press_scenario)

@@ -3,42 +3,10 @@
 import threading
 
 import numpy as np
-import pytest
 
 import onetip
 
 TOL = 2e-6  # pose.csv and markers.csv carry 6 decimals
-
-
-class PressRun:
-    """One lossless run of the press scenario: events through a callback and
-    through wait_event() at the same time, then every frame result."""
-
-    def __init__(self, scenario):
-        options = onetip.SensorOptions(lossless=True, event_queue_capacity=100000, frame_queue_capacity=1000)
-        self.callback_events, self.callback_threads = [], set()
-        self.polled_events, self.frames = [], []
-        with onetip.Sensor(f"sim:{scenario}", options=options) as sensor:
-            sensor.on_event(self._on_event)
-            sensor.start()
-            while (event := sensor.wait_event(5.0)) is not None:
-                self.polled_events.append(event)
-            assert sensor.wait_finished(60.0)
-            while (frame := sensor.poll_frame()) is not None:
-                self.frames.append(frame)
-            self.stats = sensor.stats()
-
-    def _on_event(self, event):
-        self.callback_threads.add(threading.get_ident())
-        self.callback_events.append(event)
-
-    def of_type(self, kind):
-        return [e for e in self.polled_events if e.type == kind]
-
-
-@pytest.fixture(scope="module")
-def press(press_scenario):
-    return PressRun(press_scenario)
 
 
 def test_contact_begins_and_ends_where_the_cpp_pipeline_says(press, cli_reference):
@@ -107,3 +75,33 @@ def test_stats_count_every_frame(press, cli_reference):
     assert press.stats.frames_dropped == 0 and press.stats.callback_errors == 0
     stages = {s.stage: s for s in press.stats.stages}
     assert stages["process"].count == len(cli_reference.pose) and stages["process"].median_ms > 0
+
+
+def test_frame_sd_equals_the_sd_columns_of_pose_csv(press, cli_reference):
+    processed = [f for f in press.frames if f.status in (onetip.FrameStatus.ok, onetip.FrameStatus.reference)]
+    assert len(processed) == len(cli_reference.pose)
+    for f in processed:
+        assert f.sd.shape == (6,) and f.sd.dtype == np.float64
+        np.testing.assert_allclose(f.sd, cli_reference.sd(f.frame), rtol=0, atol=TOL, err_msg=f"frame {f.frame}")
+        if not f.contact:
+            np.testing.assert_array_equal(f.sd, np.zeros(6), err_msg=f"frame {f.frame} out of contact")
+
+
+def test_events_carry_the_sd_of_their_frame(press):
+    sd_of = {f.frame: f.sd for f in press.frames}
+    inputs = press.of_type(onetip.EventType.input)
+    assert inputs
+    for e in inputs:
+        assert e.sd.shape == (6,)
+        np.testing.assert_array_equal(e.sd, sd_of[e.frame], err_msg=f"frame {e.frame}")
+    for a, b in zip(press.callback_events, press.polled_events):
+        np.testing.assert_array_equal(a.sd, b.sd)
+
+
+def test_stick_probability_is_one_value_in_0_1_per_marker_and_0_out_of_contact(press):
+    for f in press.frames:
+        p = f.stick_probability
+        assert p.shape == (f.rows * f.cols,) and p.dtype == np.float64
+        assert ((p >= 0) & (p <= 1)).all(), f"frame {f.frame}"
+        if not f.contact:
+            assert (p == 0).all(), f"frame {f.frame} out of contact"

@@ -67,8 +67,10 @@ extern "C" {
 /** The ABI this header describes; bumped on any incompatible change. */
 #define ONETIP_C_ABI_VERSION 1u
 /** Compatible additions to version 1: 1 = the option table (onetip_option_count,
- * onetip_option_describe) and keyed option access (onetip_options_get/_set/_validate). */
-#define ONETIP_C_ABI_MINOR_VERSION 1u
+ * onetip_option_describe) and keyed option access (onetip_options_get/_set/_validate);
+ * 2 = the uncertainty of the 6-D input and the markers' stick probability
+ * (onetip_c_uncertainty.h: onetip_sensor_poll_event_sd and the other *_sd functions). */
+#define ONETIP_C_ABI_MINOR_VERSION 2u
 
 /** The result of every function that can fail; onetip_error::kind holds the same value. */
 typedef enum onetip_error_kind {
@@ -641,5 +643,8 @@ ONETIP_C_API int32_t onetip_sensor_get_stats(onetip_sensor* sensor, onetip_stats
 #ifdef __cplusplus
 }
 #endif
+
+/* Minor version 2: the uncertainty forms of the poll, wait and callback functions. */
+#include "onetip_c_uncertainty.h"
 
 #endif /* ONETIP_C_H */

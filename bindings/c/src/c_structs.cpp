@@ -114,6 +114,30 @@ std::vector<onetip_marker> markersToC(const FrameResult& f) {
   return out;
 }
 
+onetip_event_sd toCWithSd(const Event& e) noexcept {
+  onetip_event_sd c{};
+  c.event = toC(e);
+  copyInput(c.sd, e.sd);
+  return c;
+}
+
+onetip_frame_sd toCWithSd(const FrameResult& f) noexcept {
+  onetip_frame_sd c{};
+  c.frame = toC(f);
+  copyInput(c.sd, f.sd);
+  return c;
+}
+
+std::vector<onetip_marker_sd> markersWithSdToC(const FrameResult& f) {
+  const std::vector<onetip_marker> plain = markersToC(f);
+  std::vector<onetip_marker_sd> out(plain.size());
+  for (std::size_t id = 0; id < out.size(); ++id) {
+    out[id].marker = plain[id];
+    out[id].stick_probability = f.markers[id].stick_probability;
+  }
+  return out;
+}
+
 onetip_stats toC(const SensorStats& s) noexcept {
   onetip_stats c{};
   c.frames_captured = s.frames_captured;

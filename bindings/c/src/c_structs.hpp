@@ -1,5 +1,5 @@
-// bindings/c/src/c_structs.hpp — the C ABI's flat structs from and to the
-// public C++ types (same units and frames: mm in S, degrees, seconds), and the
+// bindings/c/src/c_structs.hpp — the C ABI's flat structs (onetip_c.h and
+// onetip_c_uncertainty.h) from and to the public C++ types (same units and frames: mm in S, degrees, seconds), and the
 // error reporting of the boundary. The options struct: c_options.hpp.
 #pragma once
 
@@ -51,6 +51,10 @@ void copyString(char* dst, std::size_t size, const std::string& text) noexcept;
 onetip_event toC(const Event& e) noexcept;
 onetip_frame toC(const FrameResult& f) noexcept;
 std::vector<onetip_marker> markersToC(const FrameResult& f);
+// The uncertainty forms (onetip_c_uncertainty.h): the plain struct, then sd or the stick probability.
+onetip_event_sd toCWithSd(const Event& e) noexcept;
+onetip_frame_sd toCWithSd(const FrameResult& f) noexcept;
+std::vector<onetip_marker_sd> markersWithSdToC(const FrameResult& f);
 onetip_stats toC(const SensorStats& s) noexcept;
 
 }  // namespace onetip::c_api

@@ -1,12 +1,11 @@
 // bindings/c/src/onetip_c.cpp — the C ABI (onetip_c.h) over the public C++
 // API. Every entry point runs its body inside boundary(): no exception leaves,
 // each failure becomes an onetip_error_kind and a message. The options
-// functions are in c_options.cpp.
-#include <chrono>
-#include <cmath>
-
+// functions are in c_options.cpp, the uncertainty forms of poll, wait and the
+// callbacks in onetip_c_uncertainty.cpp (both forms share c_sensor_calls.hpp).
 #include "c_handles.hpp"
 #include "c_options.hpp"
+#include "c_sensor_calls.hpp"
 #include "c_structs.hpp"
 #include "onetip/version.hpp"
 #include "onetip_c.h"
@@ -18,11 +17,6 @@ namespace {
 
 std::string optionalString(const char* s) { return s ? std::string(s) : std::string(); }
 
-void refuseInsideCallback(const CSensor& s, const char* call) {
-  if (CallbackScope::inside(&s))
-    throw CError(ONETIP_ERROR_STATE, std::string(call) + ": called from inside the sensor's own callback");
-}
-
 // stop/destroy wait for the sensor's processing thread, hence for its running callback.
 void refuseStopFromCallback(const CSensor& s, const char* call) {
   refuseInsideCallback(s, call);
@@ -30,22 +24,6 @@ void refuseStopFromCallback(const CSensor& s, const char* call) {
     throw CError(ONETIP_ERROR_STATE, std::string(call) +
                                          ": called from another sensor's callback while this sensor's callback is "
                                          "running (the two would wait on each other)");
-}
-
-// Time-outs in seconds: NaN is an input error; < 0, INFINITY and anything from
-// kNoLimitS up (beyond what a clock can add) mean no limit, returned as -1.
-constexpr double kNoLimitS = 1e9;
-double waitTimeout(double timeout_s, const char* call) {
-  if (std::isnan(timeout_s)) throw Error(ErrorKind::input, std::string(call) + ": timeout_s is NaN");
-  return timeout_s < 0 || timeout_s >= kNoLimitS ? -1.0 : timeout_s;
-}
-
-// Sensor::waitEvent without a limit: hour-long slices until an event, the end or a stop.
-bool waitEventWithoutLimit(Sensor& sensor, Event& e) {
-  for (;;) {
-    if (sensor.waitEvent(e, 3600.0)) return true;
-    if (!sensor.running()) return sensor.pollEvent(e);
-  }
 }
 
 }  // namespace
@@ -135,85 +113,30 @@ ONETIP_C_API int32_t onetip_sensor_wait_finished(onetip_sensor* sensor, double t
 
 ONETIP_C_API int32_t onetip_sensor_set_event_callback(onetip_sensor* sensor, onetip_event_callback callback,
                                                       void* user, onetip_error* error) {
-  return boundary(error, [&] {
-    const auto s = lookupSensor(sensor);
-    if (!callback) return s->sensor.onEvent({});
-    CSensor* owner = s.get();
-    s->sensor.onEvent([callback, user, owner](const Event& e) {
-      const onetip_event c = toC(e);
-      CallbackScope scope(owner);
-      callback(&c, user);
-    });
-  });
+  return setEventCallbackTo(sensor, callback, user, error, [](const Event& e) { return toC(e); });
 }
 
 ONETIP_C_API int32_t onetip_sensor_set_frame_callback(onetip_sensor* sensor, onetip_frame_callback callback,
                                                       void* user, onetip_error* error) {
-  return boundary(error, [&] {
-    const auto s = lookupSensor(sensor);
-    if (!callback) return s->sensor.onFrame({});
-    CSensor* owner = s.get();
-    s->sensor.onFrame([callback, user, owner](const FrameResult& f) {
-      const onetip_frame c = toC(f);
-      const std::vector<onetip_marker> markers = markersToC(f);
-      CallbackScope scope(owner);
-      callback(&c, markers.data(), static_cast<int32_t>(markers.size()), user);
-    });
-  });
+  return setFrameCallbackTo(sensor, callback, user, error, [](const FrameResult& f) { return toC(f); }, markersToC);
 }
 
 ONETIP_C_API int32_t onetip_sensor_poll_event(onetip_sensor* sensor, onetip_event* out, int32_t* got,
                                               onetip_error* error) {
-  if (got) *got = 0;
-  return boundary(error, [&] {
-    requireNonNull(out, "onetip_sensor_poll_event: out");
-    requireNonNull(got, "onetip_sensor_poll_event: got");
-    Event e;
-    if (lookupSensor(sensor)->sensor.pollEvent(e)) {
-      *out = toC(e);
-      *got = 1;
-    }
-  });
+  return pollEventInto(sensor, out, got, error, "onetip_sensor_poll_event", [](const Event& e) { return toC(e); });
 }
 
 ONETIP_C_API int32_t onetip_sensor_wait_event(onetip_sensor* sensor, double timeout_s, onetip_event* out,
                                               int32_t* got, onetip_error* error) {
-  if (got) *got = 0;
-  return boundary(error, [&] {
-    requireNonNull(out, "onetip_sensor_wait_event: out");
-    requireNonNull(got, "onetip_sensor_wait_event: got");
-    const auto s = lookupSensor(sensor);
-    refuseInsideCallback(*s, "onetip_sensor_wait_event");
-    const double timeout = waitTimeout(timeout_s, "onetip_sensor_wait_event");
-    Event e;
-    if (timeout < 0 ? waitEventWithoutLimit(s->sensor, e) : s->sensor.waitEvent(e, timeout)) {
-      *out = toC(e);
-      *got = 1;
-    }
-  });
+  return waitEventInto(sensor, timeout_s, out, got, error, "onetip_sensor_wait_event",
+                       [](const Event& e) { return toC(e); });
 }
 
 ONETIP_C_API int32_t onetip_sensor_poll_frame(onetip_sensor* sensor, onetip_frame* out, onetip_marker* markers,
                                               int32_t capacity, int32_t* marker_count, int32_t* got,
                                               onetip_error* error) {
-  if (got) *got = 0;
-  if (marker_count) *marker_count = 0;
-  return boundary(error, [&] {
-    requireNonNull(out, "onetip_sensor_poll_frame: out");
-    requireNonNull(got, "onetip_sensor_poll_frame: got");
-    requireNonNull(marker_count, "onetip_sensor_poll_frame: marker_count");
-    if (capacity < 0) throw Error(ErrorKind::input, "onetip_sensor_poll_frame: capacity is negative");
-    if (capacity > 0) requireNonNull(markers, "onetip_sensor_poll_frame: markers (capacity > 0)");
-    FrameResult f;
-    if (!lookupSensor(sensor)->sensor.pollFrame(f)) return;
-    *out = toC(f);
-    *marker_count = static_cast<int32_t>(f.markers.size());
-    if (capacity > 0) {
-      const std::vector<onetip_marker> all = markersToC(f);
-      std::copy_n(all.begin(), std::min<std::size_t>(all.size(), static_cast<std::size_t>(capacity)), markers);
-    }
-    *got = 1;
-  });
+  return pollFrameInto(sensor, out, markers, capacity, marker_count, got, error, "onetip_sensor_poll_frame",
+                       [](const FrameResult& f) { return toC(f); }, markersToC);
 }
 
 ONETIP_C_API int32_t onetip_sensor_rezero(onetip_sensor* sensor, onetip_error* error) {

@@ -7,7 +7,9 @@
 // touches Unity objects off the main thread). While a contact lasts the target
 // is placed at its rest pose moved by the input (UnityAxes: S.x -> x, S.y -> z,
 // out of the pad -> y; mm scaled by unitsPerMm, degrees by rotationGain); at
-// contact end it returns to rest.
+// contact end it returns to rest. LastSd is the uncertainty of that input (one
+// standard deviation per axis, mm and degrees): a game can freeze an axis
+// whose sd is wide (a turn the pad cannot see).
 //
 // Editor domain reload: the native sensor is released in OnDisable (also
 // called before a script reload and on exit from play mode), OnDestroy and,
@@ -37,6 +39,9 @@ namespace Onetip
         public UnityEvent onRelease = new UnityEvent();
 
         public Input6 LastInput { get; private set; }
+        /// <summary>One standard deviation of each axis of the last input event (SensorEvent.Sd; mm,
+        /// degrees); zero out of contact.</summary>
+        public Input6 LastSd { get; private set; }
         public bool InContact { get; private set; }
 
         Sensor sensor;
@@ -73,18 +78,19 @@ namespace Onetip
         void Handle(SensorEvent e)
         {
             switch (e.Type) {
-                case EventType.ContactBegin: InContact = true; Apply(new Input6()); onContactBegin.Invoke(); break;
-                case EventType.Input: Apply(e.Input); break;
-                case EventType.ContactEnd: InContact = false; Apply(new Input6()); onContactEnd.Invoke(); break;
+                case EventType.ContactBegin: InContact = true; Apply(new Input6(), e.Sd); onContactBegin.Invoke(); break;
+                case EventType.Input: Apply(e.Input, e.Sd); break;
+                case EventType.ContactEnd: InContact = false; Apply(new Input6(), new Input6()); onContactEnd.Invoke(); break;
                 case EventType.Press: onPress.Invoke(); break;
                 case EventType.Release: onRelease.Invoke(); break;
                 case EventType.Error: Debug.LogWarning("onetip: " + e.Message); break;
             }
         }
 
-        void Apply(Input6 input)
+        void Apply(Input6 input, Input6 sd)
         {
             LastInput = input;
+            LastSd = sd;
             double x, y, z, w;
             UnityAxes.Position(input, unitsPerMm, out x, out y, out z);
             target.localPosition = restPosition + new Vector3((float)x, (float)y, (float)z);

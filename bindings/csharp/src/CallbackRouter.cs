@@ -33,7 +33,7 @@ namespace Onetip.Interop
             Route(user, router => {
                 var callback = router.OnEvent;
                 if (callback == null) return;
-                var native = (NativeEvent)Marshal.PtrToStructure(evt, typeof(NativeEvent));
+                var native = (NativeEventSd)Marshal.PtrToStructure(evt, typeof(NativeEventSd));
                 callback(SensorEvent.From(ref native));
             });
         }
@@ -44,7 +44,7 @@ namespace Onetip.Interop
             Route(user, router => {
                 var callback = router.OnFrame;
                 if (callback == null) return;
-                var native = (NativeFrame)Marshal.PtrToStructure(frame, typeof(NativeFrame));
+                var native = (NativeFrameSd)Marshal.PtrToStructure(frame, typeof(NativeFrameSd));
                 callback(FrameResult.From(ref native, CopyMarkers(markers, markerCount)));
             });
         }

@@ -31,5 +31,15 @@ namespace Onetip
             var message = string.IsNullOrEmpty(error.Message) ? "onetip: error " + code : error.Message;
             throw new OnetipException(kind, message);
         }
+
+        /// <summary>Throws OnetipException (kind Version) when the loaded library lacks the
+        /// C ABI minor version this wrapper calls (NativeMethods.AbiMinorVersion); `what` names the feature.</summary>
+        internal static void RequireMinorVersion(string what)
+        {
+            uint minor = NativeMethods.onetip_abi_minor_version();
+            if (minor < NativeMethods.AbiMinorVersion)
+                throw new OnetipException(ErrorKind.Version, what + " needs C ABI minor version " +
+                                          NativeMethods.AbiMinorVersion + ", the library has " + minor);
+        }
     }
 }

@@ -13,11 +13,14 @@ namespace Onetip.Interop
 
         /// <summary>ONETIP_C_ABI_VERSION of the header this wrapper was written against.</summary>
         internal const uint AbiVersion = 1;
-        /// <summary>ONETIP_C_ABI_MINOR_VERSION it needs (1: the option table and keyed access).</summary>
-        internal const uint AbiMinorVersion = 1;
+        /// <summary>ONETIP_C_ABI_MINOR_VERSION it needs (1: the option table and keyed access;
+        /// 2: the uncertainty forms of poll, wait and the callbacks, onetip_c_uncertainty.h).</summary>
+        internal const uint AbiMinorVersion = 2;
 
+        /// <summary>onetip_event_sd_callback: evt points to an onetip_event_sd.</summary>
         [UnmanagedFunctionPointer(CallingConvention.Cdecl)]
         internal delegate void EventCallback(IntPtr evt, IntPtr user);
+        /// <summary>onetip_frame_sd_callback: an onetip_frame_sd and markerCount onetip_marker_sd.</summary>
         [UnmanagedFunctionPointer(CallingConvention.Cdecl)]
         internal delegate void FrameCallback(IntPtr frame, IntPtr markers, int markerCount, IntPtr user);
 
@@ -76,23 +79,24 @@ namespace Onetip.Interop
         internal static extern int onetip_sensor_wait_finished(SensorHandle sensor, double timeoutS, out int finished,
                                                                out NativeError error);
 
+        // Events, frames and markers through their uncertainty forms (minor version 2).
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern int onetip_sensor_set_event_callback(SensorHandle sensor, EventCallback callback,
-                                                                    IntPtr user, out NativeError error);
+        internal static extern int onetip_sensor_set_event_sd_callback(SensorHandle sensor, EventCallback callback,
+                                                                       IntPtr user, out NativeError error);
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern int onetip_sensor_set_frame_callback(SensorHandle sensor, FrameCallback callback,
-                                                                    IntPtr user, out NativeError error);
+        internal static extern int onetip_sensor_set_frame_sd_callback(SensorHandle sensor, FrameCallback callback,
+                                                                       IntPtr user, out NativeError error);
 
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern int onetip_sensor_poll_event(SensorHandle sensor, out NativeEvent evt, out int got,
-                                                            out NativeError error);
+        internal static extern int onetip_sensor_poll_event_sd(SensorHandle sensor, out NativeEventSd evt, out int got,
+                                                               out NativeError error);
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern int onetip_sensor_wait_event(SensorHandle sensor, double timeoutS, out NativeEvent evt,
-                                                            out int got, out NativeError error);
+        internal static extern int onetip_sensor_wait_event_sd(SensorHandle sensor, double timeoutS,
+                                                               out NativeEventSd evt, out int got, out NativeError error);
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern int onetip_sensor_poll_frame(SensorHandle sensor, out NativeFrame frame,
-                                                            [In, Out] Marker[] markers, int capacity,
-                                                            out int markerCount, out int got, out NativeError error);
+        internal static extern int onetip_sensor_poll_frame_sd(SensorHandle sensor, out NativeFrameSd frame,
+                                                               [In, Out] Marker[] markers, int capacity,
+                                                               out int markerCount, out int got, out NativeError error);
 
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern int onetip_sensor_rezero(SensorHandle sensor, out NativeError error);

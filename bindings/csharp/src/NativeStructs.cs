@@ -44,6 +44,22 @@ namespace Onetip.Interop
         [MarshalAs(UnmanagedType.ByValTStr, SizeConst = 160)] public string Message;
     }
 
+    /// <summary>onetip_event_sd: the event, then one sd per component of the 6-D input.</summary>
+    [StructLayout(LayoutKind.Sequential, CharSet = CharSet.Ansi)]
+    internal struct NativeEventSd
+    {
+        public NativeEvent Event;
+        [MarshalAs(UnmanagedType.ByValArray, SizeConst = 6)] public double[] Sd;
+    }
+
+    /// <summary>onetip_frame_sd: the frame, then one sd per component of its raw 6-D input.</summary>
+    [StructLayout(LayoutKind.Sequential, CharSet = CharSet.Ansi)]
+    internal struct NativeFrameSd
+    {
+        public NativeFrame Frame;
+        [MarshalAs(UnmanagedType.ByValArray, SizeConst = 6)] public double[] Sd;
+    }
+
     [StructLayout(LayoutKind.Sequential, CharSet = CharSet.Ansi)]
     internal struct NativeStageTiming
     {

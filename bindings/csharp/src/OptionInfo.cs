@@ -25,10 +25,7 @@ namespace Onetip
         /// <summary>The table's rows, in the order of the options file.</summary>
         public static OptionInfo[] Table()
         {
-            uint minor = NativeMethods.onetip_abi_minor_version();
-            if (minor < NativeMethods.AbiMinorVersion)
-                throw new OnetipException(ErrorKind.Version, "the option table needs C ABI minor version " +
-                                          NativeMethods.AbiMinorVersion + ", the library has " + minor);
+            Errors.RequireMinorVersion("the option table");
             int n = NativeMethods.onetip_option_count();
             var rows = new OptionInfo[n];
             for (int i = 0; i < n; ++i) {

@@ -28,6 +28,7 @@ namespace Onetip
                       SensorOptions options = null)
         {
             if (source == null) throw new ArgumentNullException("source");
+            Errors.RequireMinorVersion("Sensor (events and frames with their uncertainty)");
             NativeError e;
             int code = NativeMethods.onetip_sensor_create(NativeMethods.AbiVersion, source, calibration, pattern,
                                                           reference, options ?? SensorOptions.Default(),
@@ -77,7 +78,7 @@ namespace Onetip
         {
             router.OnEvent = callback;
             NativeError e;
-            Errors.Check(NativeMethods.onetip_sensor_set_event_callback(
+            Errors.Check(NativeMethods.onetip_sensor_set_event_sd_callback(
                 handle, callback == null ? null : CallbackRouter.EventTrampoline, RouterPointer(), out e), ref e);
         }
 
@@ -86,7 +87,7 @@ namespace Onetip
         {
             router.OnFrame = callback;
             NativeError e;
-            Errors.Check(NativeMethods.onetip_sensor_set_frame_callback(
+            Errors.Check(NativeMethods.onetip_sensor_set_frame_sd_callback(
                 handle, callback == null ? null : CallbackRouter.FrameTrampoline, RouterPointer(), out e), ref e);
         }
 
@@ -97,10 +98,10 @@ namespace Onetip
         /// <summary>Non-blocking: the oldest queued event.</summary>
         public bool PollEvent(out SensorEvent evt)
         {
-            NativeEvent native;
+            NativeEventSd native;
             int got;
             NativeError e;
-            Errors.Check(NativeMethods.onetip_sensor_poll_event(handle, out native, out got, out e), ref e);
+            Errors.Check(NativeMethods.onetip_sensor_poll_event_sd(handle, out native, out got, out e), ref e);
             evt = got != 0 ? SensorEvent.From(ref native) : default(SensorEvent);
             return got != 0;
         }
@@ -109,10 +110,10 @@ namespace Onetip
         /// at once when the sensor has finished or stopped and nothing is queued.</summary>
         public bool WaitEvent(double timeoutS, out SensorEvent evt)
         {
-            NativeEvent native;
+            NativeEventSd native;
             int got;
             NativeError e;
-            Errors.Check(NativeMethods.onetip_sensor_wait_event(handle, timeoutS, out native, out got, out e), ref e);
+            Errors.Check(NativeMethods.onetip_sensor_wait_event_sd(handle, timeoutS, out native, out got, out e), ref e);
             evt = got != 0 ? SensorEvent.From(ref native) : default(SensorEvent);
             return got != 0;
         }
@@ -121,11 +122,12 @@ namespace Onetip
         public bool PollFrame(out FrameResult frame)
         {
             lock (router) {
-                NativeFrame native;
+                NativeFrameSd native;
                 int count, got;
                 NativeError e;
-                Errors.Check(NativeMethods.onetip_sensor_poll_frame(handle, out native, markerBuffer, markerBuffer.Length,
-                                                                    out count, out got, out e), ref e);
+                Errors.Check(NativeMethods.onetip_sensor_poll_frame_sd(handle, out native, markerBuffer,
+                                                                       markerBuffer.Length, out count, out got, out e),
+                             ref e);
                 frame = null;
                 if (got == 0) return false;
                 if (count > markerBuffer.Length) {  // a grid larger than the buffer: this frame's markers are cut

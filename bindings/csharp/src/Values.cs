@@ -41,13 +41,18 @@ namespace Onetip
         public double T;          // that frame's timestamp, s
         public double ArrivalS;   // when it arrived, s on Sensor.ClockSeconds()
         public Input6 Input;      // filtered and shaped; zero out of contact
+        /// <summary>One standard deviation of each component of the measured 6-D input (FrameResult.Sd;
+        /// mm, degrees); zero out of contact, wide for a component the pad cannot see.</summary>
+        public Input6 Sd;
         public string Message;    // error events
 
-        internal static SensorEvent From(ref NativeEvent e)
+        internal static SensorEvent From(ref NativeEventSd native)
         {
+            NativeEvent e = native.Event;
             return new SensorEvent {
                 Type = (EventType)e.Type, State = (ContactState)e.State, Frame = e.Frame, T = e.T,
-                ArrivalS = e.ArrivalS, Input = Input6.From(e.Input), Message = e.Message ?? ""
+                ArrivalS = e.ArrivalS, Input = Input6.From(e.Input), Sd = Input6.From(native.Sd),
+                Message = e.Message ?? ""
             };
         }
 
@@ -58,7 +63,8 @@ namespace Onetip
         }
     }
 
-    /// <summary>One marker (id = row * cols + col), laid out as onetip_marker.</summary>
+    /// <summary>One marker (id = row * cols + col), laid out as onetip_marker_sd: the fields of
+    /// onetip_marker, then the stick probability.</summary>
     [StructLayout(LayoutKind.Sequential)]
     public struct Marker
     {
@@ -67,6 +73,8 @@ namespace Onetip
         public int Region;                    // contact region (0 = largest), -1 outside
         public double X, Y, Z;                // position in S, mm (when Valid)
         public double Ux, Uy, Uz;             // displacement from rest, S, mm (when Displaced)
+        /// <summary>In [0, 1]: the marker moves with the finger (sticks) in this frame; 0 outside the tracked contact.</summary>
+        public double StickProbability;
         public bool Valid { get { return valid != 0; } }
         public bool Displaced { get { return displaced != 0; } }
     }
@@ -82,13 +90,18 @@ namespace Onetip
         public double MaxNormalMm;
         public Input6 Raw;            // measured (what `onetip process` writes to pose.csv)
         public Input6 Input;          // filtered and shaped, as in events
+        /// <summary>One standard deviation of each component of Raw (pose.csv's sd_dx .. sd_roll; mm,
+        /// degrees); zero out of contact, wide for a component the pad cannot see.</summary>
+        public Input6 Sd;
         public double[] TimesMs;      // capture, queue, detect, track, triangulate, contact, pose, process
         public string Message;        // why, when skipped or lost
         public Marker[] Markers;      // Rows * Cols entries, index = id
 
-        internal static FrameResult From(ref NativeFrame f, Marker[] markers)
+        internal static FrameResult From(ref NativeFrameSd native, Marker[] markers)
         {
+            NativeFrame f = native.Frame;
             return new FrameResult {
+                Sd = Input6.From(native.Sd),
                 Frame = f.Frame, T = f.T, ArrivalS = f.ArrivalS, Status = (FrameStatus)f.Status,
                 Contact = f.Contact != 0, Pressed = f.Pressed != 0, OutOfRange = f.OutOfRange != 0,
                 State = (ContactState)f.State, Rows = f.Rows, Cols = f.Cols, ContactRegions = f.ContactRegions,

@@ -79,18 +79,4 @@ py::array_t<double> markerDisplacements(const std::vector<MarkerState>& markers)
   });
 }
 
-py::array_t<bool> markerFlags(const std::vector<MarkerState>& markers, bool MarkerState::*flag) {
-  py::array_t<bool> out(static_cast<py::ssize_t>(markers.size()));
-  auto a = out.mutable_unchecked<1>();
-  for (py::ssize_t i = 0; i < a.shape(0); ++i) a(i) = markers[static_cast<size_t>(i)].*flag;
-  return out;
-}
-
-py::array_t<std::int32_t> markerRegions(const std::vector<MarkerState>& markers) {
-  py::array_t<std::int32_t> out(static_cast<py::ssize_t>(markers.size()));
-  auto a = out.mutable_unchecked<1>();
-  for (py::ssize_t i = 0; i < a.shape(0); ++i) a(i) = markers[static_cast<size_t>(i)].region;
-  return out;
-}
-
 }  // namespace onetip::python

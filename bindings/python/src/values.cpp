@@ -83,6 +83,10 @@ void bindEvent(py::module_& m) {
       .def_property_readonly(
           "input", [](const Event& e) { return input6Array(e.input); },
           "[dx, dy, dz, yaw, pitch, roll] (mm, deg), filtered and shaped; zero out of contact")
+      .def_property_readonly(
+          "sd", [](const Event& e) { return input6Array(e.sd); },
+          "one standard deviation of each component of the measured 6-D input (FrameResult.sd; mm, deg); "
+          "zero out of contact, wide for a component the pad cannot see")
       .def_readonly("state", &Event::state)
       .def_readonly("message", &Event::message, "error events: what happened")
       .def("__repr__", [](const Event& e) {
@@ -108,6 +112,9 @@ void bindFrameResult(py::module_& m) {
                              "the measured 6-D input (what `onetip process` writes to pose.csv)")
       .def_property_readonly("input", [](const FrameResult& f) { return input6Array(f.input); },
                              "raw after the filter, gain and dead zone (what events carry)")
+      .def_property_readonly("sd", [](const FrameResult& f) { return input6Array(f.sd); },
+                             "one standard deviation of each component of raw (pose.csv's sd_dx .. sd_roll; mm, deg); "
+                             "zero out of contact, wide for a component the pad cannot see")
       .def_readonly("pressed", &FrameResult::pressed)
       .def_readonly("out_of_range", &FrameResult::out_of_range)
       .def_readonly("rows", &FrameResult::rows)
@@ -121,11 +128,17 @@ void bindFrameResult(py::module_& m) {
       .def_property_readonly("displacements", [](const FrameResult& f) { return markerDisplacements(f.markers); },
                              "(rows*cols, 3) displacement from rest, S, mm; NaN where unknown "
                              "(reshape to (rows, cols, 3) for the contact field)")
-      .def_property_readonly("valid", [](const FrameResult& f) { return markerFlags(f.markers, &MarkerState::valid); })
+      .def_property_readonly("valid", [](const FrameResult& f) { return markerField(f.markers, &MarkerState::valid); })
       .def_property_readonly("displaced",
-                             [](const FrameResult& f) { return markerFlags(f.markers, &MarkerState::displaced); })
-      .def_property_readonly("regions", [](const FrameResult& f) { return markerRegions(f.markers); },
-                             "(rows*cols,) int32 contact region per marker (0 = largest), -1 outside")
+                             [](const FrameResult& f) { return markerField(f.markers, &MarkerState::displaced); })
+      .def_property_readonly(
+          "regions", [](const FrameResult& f) { return markerField(f.markers, &MarkerState::region); },
+          "(rows*cols,) int32 contact region per marker (0 = largest), -1 outside")
+      .def_property_readonly(
+          "stick_probability",
+          [](const FrameResult& f) { return markerField(f.markers, &MarkerState::stick_probability); },
+          "(rows*cols,) float64 per marker in [0, 1]: it moves with the finger (sticks) in this frame; "
+          "0 outside the tracked contact")
       .def_property_readonly("times", [](const FrameResult& f) { return stageTimes(f.times); },
                              "milliseconds per stage: capture, queue, detect, ..., process");
 }

@@ -8,6 +8,7 @@
 #include "core/error.hpp"
 #include "dds/ros_messages.hpp"
 #include "geometry_msgs/msg/PoseStamped.h"
+#include "geometry_msgs/msg/PoseWithCovarianceStamped.h"
 #include "onetip_msgs/msg/InputEvent.h"
 #include "pipeline/frame_processor.hpp"
 #include "sensor_msgs/msg/Joy.h"
@@ -51,6 +52,8 @@ InputPublisher::InputPublisher(const Participant& p, const InputPublisherOptions
                                        StreamKind::high_rate, qos)),
       pose_(std::make_unique<Writer>(p, geometry_msgs_msg_dds__PoseStamped__desc, p.topic("pose"),
                                      StreamKind::high_rate, qos)),
+      pose_cov_(std::make_unique<Writer>(p, geometry_msgs_msg_dds__PoseWithCovarianceStamped__desc,
+                                         p.topic("pose_with_covariance"), StreamKind::high_rate, qos)),
       markers_(std::make_unique<Writer>(p, sensor_msgs_msg_dds__PointCloud2__desc, p.topic("markers"),
                                         StreamKind::high_rate, qos)),
       events_(std::make_unique<Writer>(p, onetip_msgs_msg_dds__InputEvent__desc, p.topic("events"), StreamKind::events,
@@ -92,6 +95,13 @@ void InputPublisher::publishFrame(const pipeline::FrameResult& r, std::chrono::s
   pose.pose.orientation = {q[0], q[1], q[2], q[3]};
   pose_->write(&pose);
 
+  geometry_msgs_msg_dds__PoseWithCovarianceStamped_ pose_cov{};
+  pose_cov.header = h;
+  pose_cov.pose.pose = pose.pose;
+  const std::array<double, 36> covariance = poseCovariance(p.sd);
+  std::copy(covariance.begin(), covariance.end(), pose_cov.pose.covariance);
+  pose_cov_->write(&pose_cov);
+
   MarkerCloud cloud = markerCloud(r);
   std::vector<sensor_msgs_msg_dds__PointField_> fields;
   for (const CloudField& f : markerCloudFields())
@@ -128,7 +138,7 @@ void InputPublisher::publishEvent(std::int64_t frame, const input::InputEvent& e
 
 int InputPublisher::matchedReaders() const {
   return std::min({joy_->matchedReaders(), input6_->matchedReaders(), pose_->matchedReaders(),
-                   markers_->matchedReaders(), events_->matchedReaders()});
+                   pose_cov_->matchedReaders(), markers_->matchedReaders(), events_->matchedReaders()});
 }
 
 bool InputPublisher::waitForReaders(double timeout_s) const {

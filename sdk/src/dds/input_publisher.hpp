@@ -6,6 +6,9 @@
 //   rt/<ns>/input6   std_msgs/Float64MultiArray high_rate QoS, every frame: the
 //                    6-D input itself (mm, degrees)
 //   rt/<ns>/pose     geometry_msgs/PoseStamped high_rate QoS, every frame
+//   rt/<ns>/pose_with_covariance  geometry_msgs/PoseWithCovarianceStamped
+//                    high_rate QoS, every frame: the same pose, stamp and
+//                    frame_id, with the covariance of the 6-D input's sd
 //   rt/<ns>/markers  sensor_msgs/PointCloud2   high_rate QoS, every frame
 //   rt/<ns>/events   onetip_msgs/InputEvent    events QoS (reliable), one per
 //                    event except `input` (the joy topic carries it), with the
@@ -53,14 +56,14 @@ class InputPublisher {
                           const StreamQos& qos = {});
   ~InputPublisher();
 
-  // joy, input6, pose and markers of one processed frame; arrival: when the
+  // joy, input6, pose, pose_with_covariance and markers of one processed frame; arrival: when the
   // frame came from its source (steady clock), which anchors the stamps.
   void publishFrame(const pipeline::FrameResult& r, std::chrono::steady_clock::time_point arrival);
   // One event of the frame `frame` (-1: not tied to a frame) on the events
   // topic; `input` events are skipped (joy carries them).
   void publishEvent(std::int64_t frame, const input::InputEvent& e, std::chrono::steady_clock::time_point arrival);
   const std::string& frameId() const noexcept { return frame_id_; }
-  // Smallest number of matched readers over the five per-frame and event topics.
+  // Smallest number of matched readers over the six per-frame and event topics.
   int matchedReaders() const;
   // Waits until every topic has a matched reader, up to timeout_s; true when they do.
   bool waitForReaders(double timeout_s) const;
@@ -71,7 +74,7 @@ class InputPublisher {
 
   InputPublisherOptions options_;
   std::string frame_id_;
-  std::unique_ptr<Writer> joy_, input6_, pose_, markers_, events_;
+  std::unique_ptr<Writer> joy_, input6_, pose_, pose_cov_, markers_, events_;
   StaticTransformPublisher transform_;
   SourceToSystemClock clock_;
   InputPublisherCounts counts_;

@@ -38,13 +38,22 @@ std::array<double, 4> quaternionXyzw(const Input6& v) {
 
 std::array<double, 3> positionMetres(const Input6& v) { return {v.dx * 1e-3, v.dy * 1e-3, -v.dz * 1e-3}; }
 
-const std::array<CloudField, 6>& markerCloudFields() {
-  static const std::array<CloudField, 6> fields{{{"x", 0, kPointFieldFloat64},
+std::array<double, 36> poseCovariance(const Input6& sd) {
+  const double r = kRadPerDeg;
+  const std::array<double, 6> s{sd.dx * 1e-3, sd.dy * 1e-3, sd.dz * 1e-3, sd.pitch * r, sd.roll * r, sd.yaw * r};
+  std::array<double, 36> c{};
+  for (size_t i = 0; i < 6; ++i) c[i * 6 + i] = s[i] * s[i];
+  return c;
+}
+
+const std::array<CloudField, 7>& markerCloudFields() {
+  static const std::array<CloudField, 7> fields{{{"x", 0, kPointFieldFloat64},
                                                  {"y", 8, kPointFieldFloat64},
                                                  {"z", 16, kPointFieldFloat64},
                                                  {"displacement", 24, kPointFieldFloat64},
                                                  {"id", 32, kPointFieldUint32},
-                                                 {"label", 36, kPointFieldUint8}}};
+                                                 {"label", 36, kPointFieldUint8},
+                                                 {"stick_probability", 40, kPointFieldFloat64}}};
   return fields;
 }
 
@@ -54,6 +63,7 @@ MarkerCloud markerCloud(const pipeline::FrameResult& r) {
   const MarkerField& m = r.markers;
   const contact::ContactField& field = r.pose.field;
   const auto& labels = r.pose.step.labels;
+  const auto& stick = r.pose.step.stick_probability;
   cloud.data.reserve(static_cast<size_t>(m.validCount()) * kMarkerPointStep);
   for (int id = 0; id < m.size(); ++id) {
     const auto i = static_cast<size_t>(id);
@@ -66,6 +76,8 @@ MarkerCloud markerCloud(const pipeline::FrameResult& r) {
     const auto id32 = static_cast<std::uint32_t>(id);
     std::memcpy(point + 32, &id32, sizeof id32);
     point[36] = i < labels.size() ? static_cast<std::uint8_t>(labels[i]) : 0;
+    const double p = i < stick.size() ? stick[i] : 0.0;
+    std::memcpy(point + 40, &p, sizeof p);
     cloud.data.insert(cloud.data.end(), point, point + kMarkerPointStep);
     ++cloud.width;
   }

@@ -14,14 +14,21 @@
 //       position = T(c0) - c0 in S = (dx, dy, -dz) * 1e-3 m,
 //       orientation = the unit quaternion (x, y, z, w) of
 //       R = Rz(yaw) Ry(roll) Rx(pitch) (CONVENTIONS.md; w >= 0).
+//   geometry_msgs/PoseWithCovarianceStamped: that pose, and the 6x6 row-major
+//       covariance over x, y, z (m) and the rotations about X, Y, Z (rad), as
+//       ROS orders it: diagonal, the variances of the 6-D input's sd (mm -> m,
+//       deg -> rad): sd_dx, sd_dy, sd_dz (dz's sign does not change it), then
+//       sd_pitch (about S.x), sd_roll (about S.y), sd_yaw (about S.z).
 //   sensor_msgs/PointCloud2 of the markers (one point per marker triangulated
-//       this frame, height 1, little endian, dense), per point (40 bytes):
+//       this frame, height 1, little endian, dense), per point (48 bytes):
 //         x, y, z       FLOAT64 at 0, 8, 16   marker position in S, m
 //         displacement  FLOAT64 at 24         |u_i|, the marker's displacement
 //                                             from rest (contact field), m
 //         id            UINT32  at 32         marker id (row * cols + col)
 //         label         UINT8   at 36         0 outside the contact, 1 stick,
 //                                             2 slip, 3 detached
+//         stick_probability FLOAT64 at 40     in [0, 1]: the marker moves with
+//                                             the finger; 0 outside the contact
 #pragma once
 
 #include <array>
@@ -48,6 +55,8 @@ std::array<float, 6> joyAxes(const Input6& v, const std::array<double, 6>& worki
 // (x, y, z, w)
 std::array<double, 4> quaternionXyzw(const Input6& v);
 std::array<double, 3> positionMetres(const Input6& v);
+// ROS's 6x6 row-major pose covariance (x, y, z in m; rotations about X, Y, Z in rad) from the sd of the 6-D input.
+std::array<double, 36> poseCovariance(const Input6& sd);
 
 struct CloudField {
   const char* name;
@@ -55,8 +64,8 @@ struct CloudField {
   std::uint8_t datatype;  // sensor_msgs/PointField constants
 };
 constexpr std::uint8_t kPointFieldUint8 = 2, kPointFieldUint32 = 6, kPointFieldFloat64 = 8;
-constexpr std::uint32_t kMarkerPointStep = 40;
-const std::array<CloudField, 6>& markerCloudFields();
+constexpr std::uint32_t kMarkerPointStep = 48;
+const std::array<CloudField, 7>& markerCloudFields();
 
 struct MarkerCloud {
   std::uint32_t width = 0;          // points

@@ -7,6 +7,7 @@
 #include "core/atomic_file.hpp"
 #include "core/csv_table.hpp"
 #include "core/error.hpp"
+#include "core/pose_csv.hpp"
 
 namespace onetip::sim {
 
@@ -29,16 +30,13 @@ void writeSimulation(Simulator& sim, const std::string& out_dir, const WriteOpti
 
   saveCalibration(sim.calibration(), (dir / "calib.yaml").string());
   savePattern(sim.pattern(), (dir / "pattern.yaml").string());
-  CsvWriter pose((dir / "gt_pose.csv").string(),
-                 {"frame", "contact", "state", "dx", "dy", "dz", "yaw", "pitch", "roll"});
+  CsvWriter pose((dir / "gt_pose.csv").string(), poseCsvHeader(false));
   CsvWriter markers((dir / "gt_markers.csv").string(), {"frame", "id", "x", "y", "z", "contact", "slip"});
   const int n = sim.frameCount();
   while (!sim.done()) {
     const GroundTruthFrame& f = sim.next();
     const std::string k = std::to_string(f.index);
-    pose.row({k, f.in_contact ? "1" : "0", std::string(toString(f.in_contact ? f.state : ContactState::none)),
-              formatNumber(f.input.dx), formatNumber(f.input.dy), formatNumber(f.input.dz), formatNumber(f.input.yaw),
-              formatNumber(f.input.pitch), formatNumber(f.input.roll)});
+    pose.row(poseCsvRow(f.index, f.in_contact, f.state, f.input));
     for (int id = 0; id < f.markers.size(); ++id) {
       const auto& p = f.markers.position[static_cast<size_t>(id)];
       markers.row({k, std::to_string(id), formatNumber(p.x()), formatNumber(p.y()), formatNumber(p.z()),

@@ -3,11 +3,13 @@
 #include <stdexcept>
 #include <vector>
 
+#include "core/pose_csv.hpp"
+
 namespace onetip::viewer {
 
 namespace {
 std::vector<std::string> header(bool with_truth, bool with_finger) {
-  std::vector<std::string> h{"frame", "contact", "state", "dx", "dy", "dz", "yaw", "pitch", "roll"};
+  std::vector<std::string> h = poseCsvHeader(true);
   if (with_truth) h.insert(h.end(), {"gt_contact", "gt_dx", "gt_dy", "gt_dz", "gt_yaw", "gt_pitch", "gt_roll"});
   if (with_finger)
     h.insert(h.end(), {"finger_x", "finger_y", "finger_depth", "finger_yaw", "finger_pitch", "finger_roll"});
@@ -27,9 +29,7 @@ void ViewerPoseLog::add(std::int64_t frame, const pipeline::FrameResult& result,
   if ((with_truth_ && !truth) || (with_finger_ && !finger))
     throw std::logic_error("ViewerPoseLog::add: the ground truth or finger pose is missing");
   const input::TrackerResult& p = result.pose;
-  std::vector<std::string> row{std::to_string(frame), p.contact ? "1" : "0",
-                               std::string(toString(p.contact ? p.state : ContactState::none))};
-  appendNumbers(row, {p.raw.dx, p.raw.dy, p.raw.dz, p.raw.yaw, p.raw.pitch, p.raw.roll});
+  std::vector<std::string> row = poseCsvRow(frame, p.contact, p.state, p.raw, p.sd);
   if (with_truth_) {
     row.push_back(truth->in_contact ? "1" : "0");
     const Input6& g = truth->input;

@@ -103,7 +103,7 @@ void toRecorder(benchmark::State& state, Load load, const dds::DdsOptions& net, 
     std::this_thread::sleep_for(std::chrono::milliseconds(500));  // let discovery settle on both sides
     if (load == Load::frames_30hz) {
       const std::vector<double> v(75, 0.01);
-      input::InputEvent e{EventType::state_changed, 0, {}, ContactState::stick, {}};
+      input::InputEvent e{EventType::state_changed, 0, {}, {}, ContactState::stick, {}};
       paced(state, 1.0 / 30, [&](long i) {
         frames.publishFrame(syntheticFrame(static_cast<double>(i) / 30), std::chrono::steady_clock::now());
         frames.publishEvent(i, e, std::chrono::steady_clock::now());

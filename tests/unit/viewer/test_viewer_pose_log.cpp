@@ -33,14 +33,19 @@ TEST(ViewerPoseLog, HoldsWhatWasShownAndTheSimulatorsGroundTruth) {
   o.headless = true;
   o.window = {640, 360};
   o.pose_out = tempCsv("onetip_view_pose_");
-  std::vector<Input6> shown;
-  runViewer(o, [&](const cv::Mat&, const ViewerFrame& f) { shown.push_back(f.result.pose.raw); });
+  std::vector<Input6> shown, shown_sd;
+  runViewer(o, [&](const cv::Mat&, const ViewerFrame& f) {
+    shown.push_back(f.result.pose.raw);
+    shown_sd.push_back(f.result.pose.sd);
+  });
   const CsvTable log = readCsv(o.pose_out);
   std::filesystem::remove(o.pose_out);
   ASSERT_EQ(log.rows.size(), 36U);
-  ASSERT_EQ(log.header.size(), 16U);  // pose.csv's 9 columns and 7 of ground truth
+  ASSERT_EQ(log.header.size(), 22U);  // pose.csv's 15 columns and 7 of ground truth
   EXPECT_EQ(log.header[8], "roll");
-  EXPECT_EQ(log.header[15], "gt_roll");
+  EXPECT_EQ(log.header[9], "sd_dx");
+  EXPECT_EQ(log.header[14], "sd_roll");
+  EXPECT_EQ(log.header[21], "gt_roll");
 
   sim::Simulator truth(sim::loadScenario(kDemoPath));  // played again, on its own
   for (size_t k = 0; k < log.rows.size(); ++k) {
@@ -54,6 +59,8 @@ TEST(ViewerPoseLog, HoldsWhatWasShownAndTheSimulatorsGroundTruth) {
     EXPECT_NEAR(cell("gt_yaw"), g.input.yaw, 1e-6);
     EXPECT_NEAR(cell("dz"), shown[k].dz, 1e-6);
     EXPECT_NEAR(cell("dx"), shown[k].dx, 1e-6);
+    EXPECT_NEAR(cell("sd_dz"), shown_sd[k].dz, 1e-6);
+    EXPECT_NEAR(cell("sd_yaw"), shown_sd[k].yaw, 1e-6);
     EXPECT_NEAR(cell("dz"), g.input.dz, 0.3);  // the pipeline follows the touch
   }
   EXPECT_GT(parseNumber(log.rows.back()[log.column("gt_dz", "log")], "gt_dz"), 1.0);  // the touch is pressed by then
@@ -70,8 +77,8 @@ TEST(ViewerPoseLog, TheVirtualFingerAddsItsCommandedPose) {
   const CsvTable log = readCsv(o.pose_out);
   std::filesystem::remove(o.pose_out);
   ASSERT_EQ(log.rows.size(), 2U);
-  ASSERT_EQ(log.header.size(), 22U);
-  EXPECT_EQ(log.header[16], "finger_x");
+  ASSERT_EQ(log.header.size(), 28U);
+  EXPECT_EQ(log.header[22], "finger_x");
   // Untouched controls: the finger rests 0.5 mm above the pad (VirtualFingerOptions).
   EXPECT_DOUBLE_EQ(parseNumber(log.rows[1][log.column("finger_depth", "log")], "finger_depth"), -0.5);
 }
