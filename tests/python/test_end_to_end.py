@@ -62,8 +62,10 @@ def test_contact_field_is_the_motion_of_each_marker_from_rest(press):
     assert deepest.positions.shape == (n, 3) and deepest.displacements.shape == (n, 3)
     known = deepest.displaced & rest.valid
     assert known.sum() > n // 2
+    # from the rest kept true while nothing touches: it follows slow drift by a fraction of the marker noise
+    # (0.0006 mm) per frame, within five times that noise of the reference frame
     np.testing.assert_allclose(deepest.displacements[known], deepest.positions[known] - rest.positions[known],
-                               rtol=0, atol=1e-9)
+                               rtol=0, atol=0.003)
     assert np.isnan(deepest.displacements[~deepest.displaced]).all()
     # the pad is pushed in (-z in S) under the finger, by up to about the press depth
     assert -np.nanmin(deepest.displacements[:, 2]) > 2.0

@@ -149,7 +149,9 @@ struct MarkerState {
   /// @brief Position along S.y, mm (when valid).
   /// @var z
   /// @brief Position along S.z, mm (when valid).
-  bool displaced = false;         ///< Valid now and at rest: the displacement ux, uy, uz is known.
+  /// Valid now and at rest: the displacement ux, uy, uz is known. The rest is the reference frame's, kept
+  /// true while nothing touches: it follows a camera shifted against the pad and slow drift (docs/pose).
+  bool displaced = false;
   double ux = 0, uy = 0, uz = 0;
   /// @var ux
   /// @brief Displacement from the rest position along S.x, mm (when displaced).

@@ -15,6 +15,7 @@ void PoseTrackerOptions::validate() const {
   filter.validate();
   shaping.validate();
   press.validate();
+  rest.validate();
   for (double r : working_range) requireAbove("pose tracker: working_range entries", r, 0);
   requireAtLeast("pose tracker: clamp_factor", clamp_factor, 1);
   requireInRange("pose tracker: marker_depth_mm", marker_depth_mm, 0, MarkerPattern::kMaxMarkerDepthMm, "mm");
@@ -24,6 +25,7 @@ PoseTracker::PoseTracker(PoseTrackerOptions options)
     : options_((options.validate(), options)),
       analyzer_(options_.contact),
       self_(options_.pose.self),
+      rest_keeper_(options_.rest),
       estimator_(options_.pose),
       filter_(makeInputFilter(options_.filter)),
       button_(options_.press) {}
@@ -32,6 +34,7 @@ void PoseTracker::reset() {
   estimator_.reset();
   if (filter_) filter_->reset();
   button_.reset();
+  rest_keeper_.reset();
   last_ = TrackerResult{};
 }
 
@@ -61,7 +64,9 @@ TrackerResult PoseTracker::update(const MarkerField& now_S, const MarkerField& r
   TrackerResult r;
   r.t = t;
   const auto contact_start = std::chrono::steady_clock::now();
-  r.field = analyzer_.analyze(now_S, rest_S);
+  const RestUpdate rest_update = rest_keeper_.update(now_S, rest_S, last_.contact, self_.current().noise_mm,
+                                                     options_.contact.contact_threshold_mm, t);
+  r.field = analyzer_.analyze(now_S, rest_keeper_.rest());
   r.contact_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - contact_start).count();
   if (r.field.status == contact::ContactFieldStatus::too_few_markers) {
     TrackerResult held = last_;
@@ -106,6 +111,11 @@ TrackerResult PoseTracker::update(const MarkerField& now_S, const MarkerField& r
     if (r.step.step_limited) emit(r, EventType::error, "motion step limited to the configured maximum");
     if (r.out_of_range && !last_.out_of_range) emit(r, EventType::error, "beyond the working range");
   }
+  if (rest_update.moved)
+    emit(r, EventType::error,
+         "the camera moved against the pad by " + std::to_string(rest_update.moved_mm) +
+             " mm: the rest reference follows it");
+  if (!rest_update.hidden.empty()) emit(r, EventType::error, describeHidden(rest_update.hidden));
   r.pressed = button_.pressed();
   last_ = r;
   last_.field = contact::ContactField{};  // only the outputs are needed to hold a frame

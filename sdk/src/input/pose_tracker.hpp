@@ -2,7 +2,9 @@
 //
 // Per frame: update(now_S, rest_S, t) with the current and rest MarkerField in
 // the sensor frame S (mm, same grid) and the time in seconds runs
-//   contact analysis (contact/contact_analyzer.hpp)
+//   the rest kept true while nothing touches (rest_keeper.hpp: a shifted
+//   camera, slow drift, hidden markers; each reported as an error event)
+//   -> contact analysis (contact/contact_analyzer.hpp)
 //   -> what the sensor measures about itself (pose/sensor_self_model.hpp:
 //      marker noise on the frames out of contact, pitch, frame interval)
 //   -> stick/slip labels and the finger's increment (pose/adaptive_pose_estimator.hpp)
@@ -26,6 +28,7 @@
 #include "input/input_shaping.hpp"
 #include "input/pose_accumulator.hpp"
 #include "input/press_button.hpp"
+#include "input/rest_keeper.hpp"
 #include "pose/adaptive_pose_estimator.hpp"
 #include "pose/sensor_self_model.hpp"
 
@@ -38,6 +41,7 @@ struct PoseTrackerOptions {
   InputFilterOptions filter;
   InputShaping shaping;
   PressButtonOptions press;
+  RestKeeperOptions rest;
   // The paper's working range (Eq. 18): |dx|, |dy| <= 4 mm, dz <= 3 mm,
   // |yaw| <= 15 deg, |pitch|, |roll| <= 40 deg. Beyond it the result says
   // out_of_range; `raw` is clamped to clamp_factor times it.
@@ -84,6 +88,7 @@ class PoseTracker {
   PoseTrackerOptions options_;
   contact::ContactAnalyzer analyzer_;
   pose::SensorSelfModel self_;
+  RestKeeper rest_keeper_;
   pose::AdaptivePoseEstimator estimator_;
   PoseAccumulator accumulator_;
   std::unique_ptr<InputFilter> filter_;
