@@ -3,10 +3,12 @@
 (docs/pose/README.md, "Uncertainty").
 
 Input: docs/pose/data/campaign_uncertainty.csv, from
-  build/bench/pose_campaign --runs 300 --out docs/pose/data/campaign_uncertainty.csv
-(field level, seeds 1-300). The sd options (pose::PoseUncertaintyOptions) were chosen on the odd seeds;
+  build/bench/pose_campaign --runs 300 --image-runs 40 --image-max-frames 200 \
+    --out docs/pose/data/campaign_uncertainty.csv
+(field level, seeds 1-300, and the first 40 seeds of at most 200 frames through rendered images). The sd options (pose::PoseUncertaintyOptions) were chosen on the odd seeds;
 the even seeds are the acceptance set. Outputs:
-  uncertainty_coverage.png       share of contact frames with |error| <= 2 sd per axis, odd and even seeds,
+  uncertainty_coverage.png       share of contact frames with |error| <= 2 sd per axis, odd and even field
+                                 seeds and the rendered runs,
                                  and each run's median sd before gross slip against the limits
   data/uncertainty_summary.csv   the figures the README quotes
 Run: /usr/bin/python3 docs/pose/make_uncertainty_charts.py [data_dir] [out_dir]
@@ -28,7 +30,7 @@ SD_LIMIT = [0.05] * 3 + [0.5] * 3  # median sd before gross slip, mm and deg
 
 def load(path):
     with open(path, newline="") as f:
-        return [r for r in csv.DictReader(f) if r["level"] == "field"]
+        return list(csv.DictReader(f))
 
 
 def coverage(runs, axis):
@@ -59,8 +61,10 @@ def main():
     data = sys.argv[1] if len(sys.argv) > 1 else os.path.join(HERE, "data")
     out_dir = sys.argv[2] if len(sys.argv) > 2 else HERE
     runs = load(os.path.join(data, "campaign_uncertainty.csv"))
-    sets = {"odd seeds (tuned on)": [r for r in runs if int(r["seed"]) % 2 == 1],
-            "even seeds (acceptance)": [r for r in runs if int(r["seed"]) % 2 == 0]}
+    field = [r for r in runs if r["level"] == "field"]
+    sets = {"odd seeds (tuned on)": [r for r in field if int(r["seed"]) % 2 == 1],
+            "even seeds (acceptance)": [r for r in field if int(r["seed"]) % 2 == 0],
+            "rendered images (never tuned on)": [r for r in runs if r["level"] == "image"]}
     rows = []
     for name, subset in sets.items():
         s = summary(subset)
@@ -72,9 +76,9 @@ def main():
         w.writerows(rows)
 
     fig, (left, right) = plt.subplots(1, 2, figsize=(12, 4.5))
-    width = 0.38
+    width = 0.27
     for i, (name, subset) in enumerate(sets.items()):
-        xs = [k + (i - 0.5) * width for k in range(6)]
+        xs = [k + (i - 1) * width for k in range(6)]
         left.bar(xs, [100 * coverage(subset, a) for a in AXES], width, label=name)
     left.axhspan(90, 99.5, color="tab:green", alpha=0.15, label="accepted band 90-99.5 %")
     left.set_xticks(range(6), AXES)
