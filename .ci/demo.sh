@@ -11,4 +11,5 @@ source .ci/build-env.sh
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build build -j"$(nproc)" --target onetip_cli onetip onetip_python onetip_csharp
 mkdir -p out
+rm -rf out/demo  # this script's own output of an earlier run: `onetip demo` never replaces a folder
 ./build/bin/onetip demo --scenario samples/scenarios/demo_touch.yaml --out out/demo
