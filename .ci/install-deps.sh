@@ -7,7 +7,7 @@ packages=(
   build-essential cmake pkg-config git ccache ninja-build  # ccache, Ninja: every build in .ci/ (.ci/build-env.sh)
   doxygen  # the API reference: the `docs` target (docs/api), warnings as errors
   libopencv-dev libeigen3-dev libceres-dev libpcl-dev
-  libturbojpeg0-dev libv4l-dev linux-libc-dev
+  libturbojpeg0-dev libpng-dev libv4l-dev linux-libc-dev  # libpng: PNG frames decoded with its messages caught
   libgtest-dev libgmock-dev libbenchmark-dev
   libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri libglfw3-dev libopengl-dev
   xvfb xauth xdotool  # the windowed viewer test: a virtual X display and synthetic input
