@@ -64,6 +64,17 @@ StereoCalibrationReport runStereoCalibration(const StereoCalibrationRun& run, st
   log << "board found in both views of " << report.frames_used << " of "
       << report.frames_read + report.frames_unusable << " frames\n";
   report.result = vision::calibrateStereo(pairs, pattern, layout, run.solver);
+  report.verdict = vision::judgeCalibration(pairs, pattern, layout, run.solver, report.result, run.acceptance);
+  if (!report.verdict.reasons.empty()) {
+    if (!run.accept_weak) {
+      std::string all;
+      for (const auto& r : report.verdict.reasons) all += (all.empty() ? "" : "; ") + r;
+      throw InputError("input '" + run.input + "': calibration refused: " + all +
+                       " (--accept-weak writes it anyway)");
+    }
+    for (const auto& r : report.verdict.reasons)
+      log << "warning: accepted with --accept-weak although " << r << "\n";
+  }
   saveCalibration(report.result.calibration, run.out, report.result.rms_px);
   return report;
 }

@@ -6,8 +6,12 @@
 // views (split_x, default half the frame width; flips as given), finds the
 // whole board in both views (vision/calibration_board.hpp), skips frames
 // where either view misses it, calibrates (vision/stereo_calibration.hpp)
-// and writes the calibration file atomically (core saveCalibration, with
-// rms_px). Progress and the count of frames used go to `log`.
+// judges it (vision/calibration_acceptance.hpp: a mirrored view, a misfit or
+// poses that leave the focal length loose) and writes the calibration file
+// atomically (core saveCalibration, with rms_px). A refused calibration is an
+// InputError naming every reason, unless accept_weak: then each reason is a
+// "warning:" line in `log` and the file is written. Progress and the count of
+// frames used go to `log`.
 // Bad input (missing pattern file, input that cannot be opened, no readable
 // frame, frames of different sizes, the board found in too few frames)
 // throws InputError before anything is written.
@@ -16,6 +20,7 @@
 #include <ostream>
 #include <string>
 
+#include "vision/calibration_acceptance.hpp"
 #include "vision/stereo_calibration.hpp"
 
 namespace onetip::calib {
@@ -26,7 +31,9 @@ struct StereoCalibrationRun {
   std::string out;           // calibration file to write
   int split_x = -1;          // -1: half the frame width
   bool flip_left = false, flip_right = false;
+  bool accept_weak = false;  // write a refused calibration, with warnings
   vision::StereoCalibrationOptions solver;
+  vision::CalibrationAcceptanceOptions acceptance;
 };
 
 struct StereoCalibrationReport {
@@ -34,6 +41,7 @@ struct StereoCalibrationReport {
   int frames_unusable = 0;    // skipped by the source or of the wrong size
   int frames_used = 0;        // board found in both views
   vision::StereoCalibrationResult result;
+  vision::CalibrationVerdict verdict;
 };
 
 StereoCalibrationReport runStereoCalibration(const StereoCalibrationRun& run, std::ostream& log);

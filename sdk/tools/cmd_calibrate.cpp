@@ -1,7 +1,10 @@
 // `onetip calibrate --pattern BOARD.yaml --input FRAMES --out C.yaml
-//  [--split-x N] [--flip-left] [--flip-right]` (docs/reference.md): stereo
-// calibration of the two virtual cameras; the RMS reprojection error in
-// pixels is the last line printed.
+//  [--split-x N] [--flip-left] [--flip-right] [--accept-weak]`
+// (docs/reference.md): stereo calibration of the two virtual cameras; the RMS
+// reprojection error in pixels is the last line printed. A calibration with a
+// mirrored view, a misfit or too little coverage for the SDK's accuracy
+// (calib/stereo_calibration_run.hpp) exits non-zero naming why, unless
+// --accept-weak, which writes it with a warning line per reason.
 #include <iomanip>
 #include <iostream>
 
@@ -25,10 +28,15 @@ int runCalibrate(const Args& args) {
     throw InputError("option '--split-x': must be a positive column");
   run.flip_left = args.has("flip-left");
   run.flip_right = args.has("flip-right");
+  run.accept_weak = args.has("accept-weak");
   const calib::StereoCalibrationReport report = calib::runStereoCalibration(run, std::cerr);
   const auto& r = report.result;
+  const auto& c = report.verdict.coverage;
   std::cout << "frames used: " << report.frames_used << " of "
             << report.frames_read + report.frames_unusable << "\n"
+            << std::fixed << std::setprecision(1) << "coverage: tilts spread over " << c.tilt_spread_deg
+            << " deg, corners over " << 100 * c.view_fraction << " % of the left view, sd(f)/f "
+            << std::setprecision(4) << 100 * c.worst_f_sd_fraction << " %\n"
             << std::fixed << std::setprecision(4) << "single-view RMS (px): left "
             << r.rms_left_px << ", right " << r.rms_right_px << "\n"
             << "wrote " << run.out << "\n"
@@ -45,7 +53,9 @@ const CommandRegistrar registrar{Command{
      {"out", "calibration file to write (YAML)", false, true},
      {"split-x", "first column of the right view (default: half the frame width)", false, false},
      {"flip-left", "mirror the left half before use", true, false},
-     {"flip-right", "mirror the right half before use", true, false}},
+     {"flip-right", "mirror the right half before use", true, false},
+     {"accept-weak", "write a calibration that is refused (mirrored view, misfit, too few poses), "
+                     "with a warning line per reason", true, false}},
     runCalibrate}};
 
 }  // namespace

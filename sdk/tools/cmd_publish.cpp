@@ -1,5 +1,6 @@
 // `onetip publish`: the sensing pipeline's output on a DDS domain as ROS 2
-// topics (dds/input_publisher.hpp: joy, pose, markers, events) and, with
+// topics (dds/input_publisher.hpp: joy, input6, pose, markers, events, and
+// the sensor frame's static transform on /tf_static) and, with
 // --sensed-stride, the contact field as the haptic channel's sensed vector
 // (dds/sensed_vector_link.hpp), until SIGINT/SIGTERM or the source ends.
 // docs/dds/README.md has the topics, types, QoS and how ROS 2 reads them.
@@ -43,22 +44,27 @@ int runPublish(const Args& args) {
   const dds::DdsOptions dds_options = ddsOptionsFromArgs(args);
   const int stride = args.getInt("sensed-stride", 4);
   if (stride < 0) throw InputError("--sensed-stride " + std::to_string(stride) + ": must be >= 0 (0: off)");
-  auto pipeline = openPipelineFromArgs(args);
+  const pipeline::PipelineOptions options = pipelineOptionsFromArgs(args);
+  auto pipeline = openPipelineFromArgs(args, options);
   dds::Participant participant(dds_options);
-  dds::InputPublisher publisher(participant);
+  dds::InputPublisherOptions publishing;
+  publishing.working_range = options.processor.pose.working_range;
+  publishing.parent_frame = args.optional("tf-parent").value_or(publishing.parent_frame);
+  dds::InputPublisher publisher(participant, publishing);
   std::unique_ptr<dds::SensedVectorPublisher> sensed;
   if (stride > 0) sensed = std::make_unique<dds::SensedVectorPublisher>(participant, "onetip_contact");
 
   // Both callbacks run on the pipeline's processing thread, a frame's events first.
-  pipeline->onEvent([&](const pipeline::PipelineEvent& e) { publisher.publishEvent(e.frame, e.event); });
+  pipeline->onEvent([&](const pipeline::PipelineEvent& e) { publisher.publishEvent(e.frame, e.event, e.arrival); });
   pipeline->onFrame([&](const pipeline::PipelineFrame& f) {
     if (f.result.status != pipeline::FrameStatus::ok && f.result.status != pipeline::FrameStatus::reference) return;
-    publisher.publishFrame(f.result);
+    publisher.publishFrame(f.result, f.arrival);
     if (sensed) sensed->publish(f.result.t, sensedField(f.result, stride));
   });
   const double wait_s = args.getDouble("wait-subscribers", 0);
-  std::fprintf(stderr, "publishing on domain %d as rt/%s/...\n", dds_options.domain,
-               participant.options().ros_namespace.c_str());
+  std::fprintf(stderr, "publishing on domain %d as rt/%s/..., frame %s under %s on rt/tf_static\n",
+               dds_options.domain, participant.options().ros_namespace.c_str(), publisher.frameId().c_str(),
+               publishing.parent_frame.c_str());
   const int code = runPipelineUntilInterrupted(*pipeline, [&] {
     if (wait_s > 0 && !publisher.waitForReaders(wait_s))
       std::fprintf(stderr, "no subscriber on every topic after %.1f s: publishing anyway\n", wait_s);
@@ -80,12 +86,15 @@ std::vector<OptionSpec> publishOptions() {
                                 "(default 4: 75 channels on 17x17; 0: off)", false, false});
   o.push_back({"wait-subscribers", "wait up to this many seconds for a subscriber on every topic (default 0)", false,
                false});
+  o.push_back({"tf-parent", "TF parent frame of the sensor frame <namespace>_sensor, published on /tf_static "
+                            "(default world)", false, false});
   o.push_back({"linger", "seconds to keep the writers after the source ends (default 0.5)", false, false});
   return o;
 }
 
 const CommandRegistrar reg{{"publish",
-                            "Publish the 6-D input (sensor_msgs/Joy, geometry_msgs/PoseStamped), the markers "
+                            "Publish the 6-D input (sensor_msgs/Joy, std_msgs/Float64MultiArray, "
+                            "geometry_msgs/PoseStamped), the markers "
                             "(sensor_msgs/PointCloud2), events and the haptic sensed vector over DDS as ROS 2 "
                             "topics rt/<namespace>/...",
                             publishOptions(), runPublish}};

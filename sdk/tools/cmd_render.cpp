@@ -45,6 +45,9 @@ int runRender(const Args& args) {
     t0 = Clock::now();
     results[i] = renderer.render(queries.row(i), k);
     query_ms[i] = msSince(t0);
+    if (!results[i].found())
+      throw InputError(args.get("queries") + ": query " + std::to_string(i + 1) +
+                       ": no dataset row is a finite distance from it (a value overflows the search space)");
   }
 
   CsvWriter out(out_path, {"m1", "m2", "m3"});

@@ -16,12 +16,20 @@ std::vector<OptionSpec> pipelineInputOptions() {
           {"options", "pipeline options file (YAML, keys of onetip/sensor_options.hpp)", false, false}};
 }
 
-std::unique_ptr<pipeline::Pipeline> openPipelineFromArgs(const Args& args) {
+pipeline::PipelineOptions pipelineOptionsFromArgs(const Args& args) {
   pipeline::PipelineOptions options;
   if (auto path = args.optional("options")) options = pipeline::loadPipelineOptions(*path);
+  return options;
+}
+
+std::unique_ptr<pipeline::Pipeline> openPipelineFromArgs(const Args& args, const pipeline::PipelineOptions& options) {
   return pipeline::openPipeline({args.get("input"), args.optional("calib").value_or(""),
                                  args.optional("pattern").value_or(""), args.optional("reference").value_or("")},
                                 options);
+}
+
+std::unique_ptr<pipeline::Pipeline> openPipelineFromArgs(const Args& args) {
+  return openPipelineFromArgs(args, pipelineOptionsFromArgs(args));
 }
 
 int runPipelineUntilInterrupted(pipeline::Pipeline& p, const std::function<bool()>& ready) {

@@ -19,7 +19,10 @@
 namespace onetip::tools {
 
 std::vector<OptionSpec> pipelineInputOptions();
+// The options of --options (defaults without it).
+pipeline::PipelineOptions pipelineOptionsFromArgs(const Args& args);
 std::unique_ptr<pipeline::Pipeline> openPipelineFromArgs(const Args& args);
+std::unique_ptr<pipeline::Pipeline> openPipelineFromArgs(const Args& args, const pipeline::PipelineOptions& options);
 
 // Starts `p`, waits until SIGINT/SIGTERM (handlers installed for the call) or
 // the source ends, then stops it. `ready` runs after the handlers are in place

@@ -1,13 +1,19 @@
 // tests/dds/test_dds_messages.cpp — the pure parts of onetip_dds: ROS time
-// stamps, the pose quaternion against an independent construction, the marker
-// cloud's byte layout, ROS names and the options' error messages.
+// stamps and their system-clock mapping, the Joy axes' scaling, the pose
+// quaternion against an independent construction, the marker cloud's byte
+// layout, ROS names and frames, and the options' error messages.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <Eigen/Geometry>
+#include <chrono>
 #include <cstring>
 
 #include "dds/participant.hpp"
+#include "dds/ros_clock.hpp"
 #include "dds/ros_messages.hpp"
+#include "dds/static_transform.hpp"
 #include "input_error_of.hpp"
 #include "pipeline/frame_processor.hpp"
 
@@ -24,6 +30,31 @@ TEST(DdsMessages, RosTimeSplitsSecondsAndNanoseconds) {
   EXPECT_EQ(t.sec, 4);
   EXPECT_EQ(t.nanosec, 0u);
   EXPECT_NEAR(dds::seconds(dds::rosTime(12345.678901234)), 12345.678901234, 1e-9);
+}
+
+// rviz2 and tf2 compare stamps with the system clock: the first frame is
+// stamped with the system time of its arrival, later ones keep the source's spacing.
+TEST(DdsMessages, StampsAreOnTheSystemClockWithTheSourcesSpacing) {
+  dds::SourceToSystemClock clock;
+  EXPECT_FALSE(clock.offset());
+  EXPECT_DOUBLE_EQ(clock.stamp(2.0, 1.8e9), 1.8e9);
+  EXPECT_DOUBLE_EQ(clock.stamp(2.5, 1.8e9 + 7.0), 1.8e9 + 0.5);  // the arrival of later frames does not move it
+  EXPECT_DOUBLE_EQ(clock.stamp(1.0, 0.0), 1.8e9 - 1.0);
+  const double system_now =
+      std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
+  const double a_second_ago = dds::systemSecondsAt(std::chrono::steady_clock::now() - std::chrono::seconds(1));
+  EXPECT_NEAR(a_second_ago, system_now - 1.0, 0.05);
+}
+
+// As spacenav_node reports a SpaceMouse: each axis over its full scale (the
+// working range), clamped to [-1, 1].
+TEST(DdsMessages, JoyAxesAreTheInputOverTheWorkingRangeClamped) {
+  const std::array<double, 6> range{4, 4, 3, 15, 40, 40};
+  const auto a = dds::joyAxes(Input6{2.0, -4.0, 1.5, 30.0, -50.0, 10.0}, range);
+  const std::array<float, 6> want{0.5f, -1.0f, 0.5f, 1.0f, -1.0f, 0.25f};
+  for (size_t i = 0; i < 6; ++i) EXPECT_FLOAT_EQ(a[i], want[i]) << "axis " << i;
+  const auto b = dds::joyAxes(Input6{0.4, 0, 0, 0, 0, 0}, {0.8, 1, 1, 1, 1, 1});
+  EXPECT_FLOAT_EQ(b[0], 0.5f);
 }
 
 TEST(DdsMessages, PoseIsTheConventionsMotionInMetresAndAUnitQuaternion) {
@@ -87,6 +118,24 @@ TEST(DdsNames, TopicsFollowRos2Mapping) {
   EXPECT_NE(inputErrorOf([] { dds::rosTopicName("a b", "joy"); }).find("a b"), std::string::npos);
   EXPECT_NE(inputErrorOf([] { dds::rosTopicName("ns", "2joy"); }).find("2joy"), std::string::npos);
   EXPECT_NE(inputErrorOf([] { dds::rosTopicName("ns//x", "joy"); }).find("ns//x"), std::string::npos);
+}
+
+// Two sensors in two namespaces have two TF frames; the static transform
+// refuses a frame that is no ROS name, or a parent that is the sensor frame.
+TEST(DdsNames, SensorFrameIsUnderTheNamespaceAndItsParentIsChecked) {
+  EXPECT_EQ(dds::sensorFrameId("onetip"), "onetip_sensor");
+  EXPECT_EQ(dds::sensorFrameId("/robot/left_tip"), "robot/left_tip_sensor");
+  EXPECT_NE(dds::sensorFrameId("left"), dds::sensorFrameId("right"));
+  dds::DdsOptions o;
+  o.domain = 1 + ::getpid() % 200;
+  o.interface = "lo";
+  o.peers = {"127.0.0.1"};
+  const dds::Participant p(o);
+  EXPECT_NE(inputErrorOf([&] { dds::StaticTransformPublisher(p, "my frame", "onetip_sensor"); }).find("'my frame'"),
+            std::string::npos);
+  EXPECT_NE(inputErrorOf([&] { dds::StaticTransformPublisher(p, "onetip_sensor", "onetip_sensor"); }).find("itself"),
+            std::string::npos);
+  EXPECT_NO_THROW(dds::StaticTransformPublisher(p, "base_link", "onetip_sensor"));
 }
 
 TEST(DdsNames, BadOptionsNameTheField) {

@@ -9,6 +9,8 @@
 #include <unistd.h>
 
 #include <Eigen/Geometry>
+#include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <numeric>
 #include <fstream>
@@ -50,7 +52,13 @@ struct PoseRow {
   std::array<double, 6> v;
 };
 
-int frameOf(double stamp) { return static_cast<int>(std::lround(stamp * kFps)); }
+// The SensorOptions working range (onetip/sensor_option_table.hpp defaults;
+// the test's options.yaml leaves it as it is): the Joy axes' full scale.
+constexpr std::array<double, 6> kWorkingRange{4, 4, 3, 15, 40, 40};
+
+double systemNow() {
+  return std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
+}
 
 // Events implied by pose.csv under the SDK's documented rules
 // (onetip/events.hpp; press at dz > 1.5 mm, release at dz < 1.0 mm).
@@ -117,31 +125,93 @@ class RosInterop : public ::testing::Test {
     ChildProcess recorder(recorder_prefix + recorderAsanOptions() + ROS_TOPIC_RECORDER + " --domain " + domain + " --namespace " + ns + " " +
                               recorder_net + " --out " + out + " --duration 120 --idle 3",
                           dir_.file("recorder.log"));
+    started_ = systemNow();
     ChildProcess publisher(publisher_prefix + onetip::test::cliPath() + " publish --input sim:" + kScenario + " --options " +
                                dir_.file("options.yaml") + " --domain " + domain + " --namespace " + ns + " " +
                                publisher_net + " --wait-subscribers 20",
                            dir_.file("publisher.log"));
     ASSERT_EQ(publisher.wait(180), 0) << publisher.log();
+    ended_ = systemNow();
     ASSERT_EQ(recorder.wait(30), 0) << recorder.log();
     std::printf("%s%s", publisher.log().c_str(), recorder.log().c_str());
+    frame_id_ = ns + "_sensor";
     compare(out, min_share);
+  }
+
+  // Stamps are on the system clock: source time + one offset, fixed when the
+  // first frame arrived. The events name their frame (t = frame / fps), which
+  // gives the offset; every stamp must then lie between the publisher's start
+  // and its end plus the scenario's length (a sim: source runs ahead of the
+  // wall clock), never near 1970.
+  void findStampOffset(const std::string& out) {
+    const auto events = readCsv(out + "/events.csv");
+    ASSERT_FALSE(events.empty());
+    offset_ = std::stod(events[0][3]) - std::stod(events[0][0]) / kFps;
+    for (const auto& r : events) EXPECT_NEAR(std::stod(r[3]) - std::stod(r[0]) / kFps, offset_, 1e-6) << "frame " << r[0];
+  }
+  int frameOf(double stamp) const {
+    EXPECT_GE(stamp, started_) << "stamped before the publisher started: not the system clock";
+    EXPECT_LE(stamp, ended_ + static_cast<double>(pose_.size()) / kFps);
+    return static_cast<int>(std::lround((stamp - offset_) * kFps));
   }
 
   void compare(const std::string& out, double min_share) {
     const size_t frames = pose_.size();
     ASSERT_GT(frames, 100u);
+    findStampOffset(out);
 
-    // Joy: axes = the 6-D input in CONVENTIONS order and units (float32), buttons [press, contact].
+    // The sensor frame's static transform, under the default parent "world":
+    // received although written before the recorder matched (transient local).
+    const auto tf = readCsv(out + "/tf_static.csv");
+    ASSERT_EQ(tf.size(), 1u) << "one static transform";
+    ASSERT_EQ(tf[0].size(), 10u);
+    EXPECT_EQ(tf[0][1], "world");
+    EXPECT_EQ(tf[0][2], frame_id_);
+    EXPECT_GE(std::stod(tf[0][0]), started_);
+    EXPECT_LE(std::stod(tf[0][0]), ended_);
+    for (size_t i = 3; i < 9; ++i) EXPECT_EQ(std::stod(tf[0][i]), 0.0) << "column " << i;
+    EXPECT_EQ(std::stod(tf[0][9]), 1.0);
+
+    // Joy: axes = the 6-D input over the working range, clamped to [-1, 1]
+    // (float32), buttons [press, contact], in the sensor frame <ns>_sensor.
     const auto joy = readCsv(out + "/joy.csv");
     std::set<int> joy_frames;
+    int saturated = 0;
     for (const auto& r : joy) {
-      ASSERT_EQ(r.size(), 9u);
+      ASSERT_EQ(r.size(), 10u);
       const int f = frameOf(std::stod(r[0]));
       ASSERT_TRUE(pose_.count(f)) << "joy stamp " << r[0] << " is no frame of pose.csv";
       joy_frames.insert(f);
-      for (size_t i = 0; i < 6; ++i)
-        EXPECT_NEAR(std::stod(r[1 + i]), pose_[f].v[i], 1e-6 + 1e-6 * std::abs(pose_[f].v[i])) << "frame " << f << " axis " << i;
+      for (size_t i = 0; i < 6; ++i) {
+        const double want = std::clamp(pose_[f].v[i] / kWorkingRange[i], -1.0, 1.0);
+        EXPECT_NEAR(std::stod(r[1 + i]), want, 1e-6) << "frame " << f << " axis " << i;
+        EXPECT_LE(std::abs(std::stod(r[1 + i])), 1.0);
+        if (std::abs(pose_[f].v[i]) > kWorkingRange[i]) ++saturated;
+      }
       EXPECT_EQ(std::stoi(r[8]), pose_[f].contact) << "frame " << f;
+      EXPECT_EQ(r[9], frame_id_);
+    }
+    std::printf("joy: %d axis values beyond the working range, saturated at +-1\n", saturated);
+
+    // input6: the 6-D input itself (mm, degrees), one Float64MultiArray per
+    // frame with no header, so matched to pose.csv's rows in order.
+    const auto input6 = readCsv(out + "/input6.csv");
+    EXPECT_GE(static_cast<double>(input6.size()), min_share * static_cast<double>(frames));
+    auto next = pose_.begin();
+    for (const auto& r : input6) {
+      ASSERT_GE(r.size(), 10u);
+      std::string label = r[9];
+      for (size_t i = 10; i < r.size(); ++i) label += "," + r[i];
+      EXPECT_EQ(label, "dx,dy,dz,yaw,pitch,roll");
+      EXPECT_EQ(r[6] + " " + r[7] + " " + r[8], "1 6 6");
+      auto same = [&](const PoseRow& p) {
+        for (size_t i = 0; i < 6; ++i)
+          if (std::abs(std::stod(r[i]) - p.v[i]) > 1e-6) return false;
+        return true;
+      };
+      while (next != pose_.end() && !same(next->second)) ++next;
+      ASSERT_NE(next, pose_.end()) << "an input6 sample matches no later row of pose.csv: " << r[0] << " " << r[2];
+      ++next;
     }
     std::printf("joy: %zu of %zu frames received\n", joy_frames.size(), frames);
     EXPECT_GE(static_cast<double>(joy_frames.size()), min_share * static_cast<double>(frames));
@@ -164,6 +234,7 @@ class RosInterop : public ::testing::Test {
                            Eigen::AngleAxisd(v[4] * d, Eigen::Vector3d::UnitX()));
       const Eigen::Quaterniond got(std::stod(r[7]), std::stod(r[4]), std::stod(r[5]), std::stod(r[6]));
       EXPECT_NEAR(std::abs(q.dot(got)), 1.0, 1e-9) << "frame " << f;
+      EXPECT_EQ(r[8], frame_id_);
     }
 
     // PointCloud2: the markers of markers.csv (mm) in metres, same ids.
@@ -204,6 +275,8 @@ class RosInterop : public ::testing::Test {
   }
 
   ScratchDir dir_{"onetip-dds"};
+  double started_ = 0, ended_ = 0, offset_ = 0;  // system clock, s
+  std::string frame_id_;
   std::map<std::string, size_t> received_;  // samples per best-effort topic (one per frame sent)
   std::map<int, PoseRow> pose_;
   std::map<int, std::map<int, std::array<double, 3>>> markers_;

@@ -10,100 +10,13 @@
 // publisher killed mid-run (SIGKILL: no goodbye on the wire) with the stale
 // time set long: DDS liveliness (the writer's 0.5 s lease) must retract the
 // platform within the lease, well before the stale timer would.
-#include <gtest/gtest.h>
-#include <unistd.h>
-
-#include <array>
-#include <chrono>
-#include <cmath>
-#include <thread>
-
 #include "child_process.hpp"
-#include "dds/sensed_vector_link.hpp"
-#include "devices/servo_platform.hpp"
-#include "haptics/biotac_like_sensor.hpp"
-#include "haptics/display_grid.hpp"
-#include "haptics/knn_renderer.hpp"
-#include "haptics/tactile_dataset.hpp"
-#include "maestro_emulator.hpp"
-#include "scratch_dir.hpp"
-#include "test_paths.hpp"
+#include "teleop_fixture.hpp"
 
 namespace {
 
 using namespace onetip;
-using Clock = std::chrono::steady_clock;
-
-std::vector<double> rowOf(const haptics::TactileDataset& d, size_t row) {
-  const float* s = d.sensedRow(row);
-  return std::vector<double>(s, s + d.channels);
-}
-
-// A dataset row whose three angles are all within [lo, hi] deg.
-size_t rowWithAngles(const haptics::TactileDataset& d, double lo, double hi) {
-  for (size_t r = 0; r < d.size(); ++r) {
-    const float* m = d.command(r);
-    if (m[0] >= lo && m[0] <= hi && m[1] >= lo && m[1] <= hi && m[2] >= lo && m[2] <= hi) return r;
-  }
-  return 0;
-}
-
-// The emulated Maestro's targets in degrees, one entry per driver period.
-struct Period {
-  Clock::time_point t;
-  std::array<double, 3> deg;
-};
-
-class TeleopOverDds : public ::testing::Test {
- protected:
-  void SetUp() override {
-    haptics::writeDatasetCsv(dataset_, dir_.file("dataset.csv"));
-    net_.domain = 1 + ::getpid() % 200;
-    net_.ros_namespace = "onetip_teleop_" + std::to_string(::getpid());
-    net_.interface = "lo";
-    net_.peers = {"127.0.0.1"};
-  }
-
-  std::string teleopCommand(const std::string& port, int stale_ms, double duration_s) const {
-    return std::string(onetip::test::cliPath()) + " teleop --dataset " + dir_.file("dataset.csv") + " --port " + port +
-           " --domain " + std::to_string(net_.domain) + " --namespace " + net_.ros_namespace +
-           " --interface lo --peer 127.0.0.1 --stale-ms " + std::to_string(stale_ms) + " --duration " +
-           std::to_string(duration_s);
-  }
-
-  static std::vector<Period> periodsOf(const devices::testing::MaestroEmulator& maestro) {
-    std::vector<Period> periods;
-    std::array<double, 3> deg{};
-    for (const auto& e : maestro.events(0x84)) {
-      EXPECT_TRUE(e.channel >= 0 && e.channel < 3) << "target for channel " << e.channel;
-      if (e.channel < 0 || e.channel >= 3) continue;
-      deg[static_cast<size_t>(e.channel)] =
-          options_.calibration[static_cast<size_t>(e.channel)].degreesFromQuarterMicroseconds(e.value);
-      if (e.channel == 2) periods.push_back({e.t, deg});
-    }
-    for (const auto& p : periods)  // the platform's safe range, [30, 195] deg
-      for (double d : p.deg) {
-        EXPECT_GE(d, 30.0 - kTol);
-        EXPECT_LE(d, 195.0 + kTol);
-      }
-    return periods;
-  }
-  static bool atRest(const Period& p) {
-    return std::abs(p.deg[0] - kRest) < kTol && std::abs(p.deg[1] - kRest) < kTol && std::abs(p.deg[2] - kRest) < kTol;
-  }
-  static bool near(const Period& p, const std::array<double, 3>& m) {
-    return std::abs(p.deg[0] - m[0]) < 0.1 && std::abs(p.deg[1] - m[1]) < 0.1 && std::abs(p.deg[2] - m[2]) < 0.1;
-  }
-
-  static constexpr double kRest = 30.0, kTol = 0.05;  // a quarter microsecond is ~0.02 deg
-  static inline const devices::ServoPlatformOptions options_{};
-  test_support::ScratchDir dir_{"onetip-teleop"};
-  const haptics::PlatformKinematics kinematics_;
-  const haptics::BiotacLikeSensor sensor_;
-  const haptics::TactileDataset dataset_ = haptics::simulateDataset(kinematics_, sensor_, 9.0);
-  const haptics::KnnRenderer renderer_{dataset_};
-  dds::DdsOptions net_;
-};
+using namespace onetip::teleop_test;
 
 TEST_F(TeleopOverDds, StreamCutRetractsWithinTheStaleTimeAndResumesAtTheSpeedLimit) {
   const std::vector<double> a = rowOf(dataset_, rowWithAngles(dataset_, 90, 130));
@@ -114,21 +27,9 @@ TEST_F(TeleopOverDds, StreamCutRetractsWithinTheStaleTimeAndResumesAtTheSpeedLim
   test_support::ChildProcess teleop(teleopCommand(maestro.path(), 100, 8), dir_.file("teleop.log"));
   dds::Participant participant(net_);
   dds::SensedVectorPublisher publisher(participant, "biotac_like");
-  const auto give_up = Clock::now() + std::chrono::seconds(20);
-  while (publisher.matchedReaders() == 0 && Clock::now() < give_up) std::this_thread::sleep_for(std::chrono::milliseconds(10));
-  ASSERT_GT(publisher.matchedReaders(), 0) << teleop.log();
-
+  ASSERT_TRUE(waitForReader(publisher)) << teleop.log();
   auto publishFor = [&](const std::vector<double>& v, double seconds) {
-    const auto start = Clock::now();
-    auto next = start;
-    Clock::time_point last{};
-    while (Clock::now() - start < std::chrono::duration<double>(seconds)) {
-      publisher.publish(std::chrono::duration<double>(Clock::now().time_since_epoch()).count(), v);
-      last = Clock::now();
-      next += std::chrono::milliseconds(10);  // 100 Hz, as a BioTac
-      std::this_thread::sleep_until(next);
-    }
-    return last;
+    return TeleopOverDds::publishFor(publisher, v, seconds);
   };
   publishFor(a, 1.0);
   const Clock::time_point short_gap = Clock::now();

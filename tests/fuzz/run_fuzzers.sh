@@ -6,12 +6,9 @@
 # and exits non-zero when any harness finds a crash, a leak or a time-out.
 #   tests/fuzz/run_fuzzers.sh BUILD_DIR [SECONDS]
 #   tests/fuzz/run_fuzzers.sh --list      (the harness names, one line)
-# ONETIP_FUZZ_SET=light leaves out the two harnesses that link the whole SDK
-# (fuzz_options, fuzz_c_options): for a CI run short of time.
 set -uo pipefail
 harnesses=(fuzz_frame fuzz_calibration fuzz_pattern fuzz_scenario fuzz_dataset_csv fuzz_dataset_binary fuzz_queries
-           fuzz_spnav_protocol)
-[ "${ONETIP_FUZZ_SET:-all}" = light ] || harnesses+=(fuzz_options fuzz_c_options)
+           fuzz_spnav_protocol fuzz_options fuzz_c_options)
 if [ "${1:-}" = --list ]; then
   echo "${harnesses[*]}"
   exit 0

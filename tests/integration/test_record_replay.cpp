@@ -12,6 +12,7 @@
 #include "core/csv_table.hpp"
 #include "scratch_dir.hpp"
 #include "test_paths.hpp"
+#include "sanitizer_leg.hpp"
 
 namespace {
 
@@ -30,6 +31,7 @@ std::string readAll(const fs::path& p) {
 }
 
 TEST(RecordReplay, ProcessingASessionReproducesTheLiveRunExactly) {
+  ONETIP_SWEEP_RUNS_IN_RELEASE_ONLY();
   const onetip::test_support::ScratchDir dir("onetip-record-replay");
   const std::string scenario = (kSource / "samples/scenarios/slide_x.yaml").string();
   const fs::path session = dir.path() / "session";

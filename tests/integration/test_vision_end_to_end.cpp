@@ -16,6 +16,7 @@
 #include "sim/simulator.hpp"
 #include "scratch_dir.hpp"
 #include "test_paths.hpp"
+#include "sanitizer_leg.hpp"
 
 using namespace onetip;
 namespace fs = std::filesystem;
@@ -69,6 +70,7 @@ MarkerErrors playScenario(const std::string& name, const StereoCalibration& cali
 }  // namespace
 
 TEST(VisionEndToEnd, MarkersMatchTheTruthWithTheTrueCalibration) {
+  ONETIP_SWEEP_RUNS_IN_RELEASE_ONLY();
   sim::Simulator probe(sim::loadScenario((kSource / "samples" / "scenarios" / "press.yaml").string()));
   const StereoCalibration calib = probe.calibration();
   for (const auto& [name, frames] : std::vector<std::pair<std::string, int>>{
@@ -81,6 +83,7 @@ TEST(VisionEndToEnd, MarkersMatchTheTruthWithTheTrueCalibration) {
 }
 
 TEST(VisionEndToEnd, MarkersMatchTheTruthWithTheCalibrationOnetipCalibrateMade) {
+  ONETIP_SWEEP_RUNS_IN_RELEASE_ONLY();
   const test_support::ScratchDir scratch("onetip-e2e");
   const fs::path dir = scratch.path();
   const std::string cli = onetip::test::cliPath();

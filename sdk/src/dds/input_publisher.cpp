@@ -2,14 +2,17 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <thread>
 
+#include "core/error.hpp"
 #include "dds/ros_messages.hpp"
 #include "geometry_msgs/msg/PoseStamped.h"
 #include "onetip_msgs/msg/InputEvent.h"
 #include "pipeline/frame_processor.hpp"
 #include "sensor_msgs/msg/Joy.h"
 #include "sensor_msgs/msg/PointCloud2.h"
+#include "std_msgs/msg/Float64MultiArray.h"
 
 namespace onetip::dds {
 namespace {
@@ -32,31 +35,54 @@ Seq sequenceOver(T* data, size_t n) {
   return s;
 }
 
+const InputPublisherOptions& checked(const InputPublisherOptions& o) {
+  for (double w : o.working_range)
+    if (!(w > 0 && std::isfinite(w))) throw InputError("dds publisher working_range: every entry must be > 0");
+  return o;
+}
+
 }  // namespace
 
-InputPublisher::InputPublisher(const Participant& p, const StreamQos& qos, std::string frame_id)
-    : frame_id_(std::move(frame_id)),
+InputPublisher::InputPublisher(const Participant& p, const InputPublisherOptions& options, const StreamQos& qos)
+    : options_(checked(options)),
+      frame_id_(sensorFrameId(p.options().ros_namespace)),
       joy_(std::make_unique<Writer>(p, sensor_msgs_msg_dds__Joy__desc, p.topic("joy"), StreamKind::high_rate, qos)),
+      input6_(std::make_unique<Writer>(p, std_msgs_msg_dds__Float64MultiArray__desc, p.topic("input6"),
+                                       StreamKind::high_rate, qos)),
       pose_(std::make_unique<Writer>(p, geometry_msgs_msg_dds__PoseStamped__desc, p.topic("pose"),
                                      StreamKind::high_rate, qos)),
       markers_(std::make_unique<Writer>(p, sensor_msgs_msg_dds__PointCloud2__desc, p.topic("markers"),
                                         StreamKind::high_rate, qos)),
       events_(std::make_unique<Writer>(p, onetip_msgs_msg_dds__InputEvent__desc, p.topic("events"), StreamKind::events,
-                                       qos)) {}
+                                       qos)),
+      transform_(p, options_.parent_frame, frame_id_, qos) {}
 
 InputPublisher::~InputPublisher() = default;
 
-void InputPublisher::publishFrame(const pipeline::FrameResult& r) {
-  const input::TrackerResult& p = r.pose;
-  const std_msgs_msg_dds__Header_ h = header(r.t, frame_id_);
+double InputPublisher::stamp(double source_t, std::chrono::steady_clock::time_point arrival) {
+  return clock_.stamp(source_t, systemSecondsAt(arrival));
+}
 
-  std::array<float, 6> axes = joyAxes(p.input);
+void InputPublisher::publishFrame(const pipeline::FrameResult& r, std::chrono::steady_clock::time_point arrival) {
+  const input::TrackerResult& p = r.pose;
+  const std_msgs_msg_dds__Header_ h = header(stamp(r.t, arrival), frame_id_);
+
+  std::array<float, 6> axes = joyAxes(p.input, options_.working_range);
   std::array<int32_t, 2> buttons{p.pressed ? 1 : 0, p.contact ? 1 : 0};
   sensor_msgs_msg_dds__Joy_ joy{};
   joy.header = h;
   joy.axes = sequenceOver<dds_sequence_float>(axes.data(), axes.size());
   joy.buttons = sequenceOver<dds_sequence_int32>(buttons.data(), buttons.size());
   joy_->write(&joy);
+
+  std::array<double, 6> input = p.input.asArray();
+  static const char kAxes[] = "dx,dy,dz,yaw,pitch,roll";
+  std_msgs_msg_dds__MultiArrayDimension_ dim{const_cast<char*>(kAxes), 6, 6};  // read only: dds_write serialises it
+  std_msgs_msg_dds__Float64MultiArray_ raw{};
+  raw.layout.dim = sequenceOver<dds_sequence_std_msgs_msg_dds__MultiArrayDimension_>(&dim, 1);
+  raw.layout.data_offset = 0;
+  raw.data = sequenceOver<dds_sequence_double>(input.data(), input.size());
+  input6_->write(&raw);
 
   geometry_msgs_msg_dds__PoseStamped_ pose{};
   pose.header = h;
@@ -85,10 +111,11 @@ void InputPublisher::publishFrame(const pipeline::FrameResult& r) {
   ++counts_.frames;
 }
 
-void InputPublisher::publishEvent(std::int64_t frame, const input::InputEvent& e) {
+void InputPublisher::publishEvent(std::int64_t frame, const input::InputEvent& e,
+                                  std::chrono::steady_clock::time_point arrival) {
   if (e.type == EventType::input) return;
   onetip_msgs_msg_dds__InputEvent_ ev{};
-  ev.header = header(e.t, frame_id_);
+  ev.header = header(stamp(e.t, arrival), frame_id_);
   ev.type = static_cast<uint8_t>(e.type);
   ev.state = static_cast<uint8_t>(e.state);
   ev.frame = frame;
@@ -100,8 +127,8 @@ void InputPublisher::publishEvent(std::int64_t frame, const input::InputEvent& e
 }
 
 int InputPublisher::matchedReaders() const {
-  return std::min({joy_->matchedReaders(), pose_->matchedReaders(), markers_->matchedReaders(),
-                   events_->matchedReaders()});
+  return std::min({joy_->matchedReaders(), input6_->matchedReaders(), pose_->matchedReaders(),
+                   markers_->matchedReaders(), events_->matchedReaders()});
 }
 
 bool InputPublisher::waitForReaders(double timeout_s) const {

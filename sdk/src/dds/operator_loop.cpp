@@ -54,22 +54,33 @@ OperatorLoopStats OperatorLoop::run(double duration_s) {
   std::array<Clock::time_point, 64> arrived{};  // arrival of submission k at [k % 64]
   pipeline::TimingStats response({"sample_to_command"}, 10000);
 
+  // A refused sample (or a render that found no dataset row) retracts at
+  // once, in its own tick: nothing is commanded until a command rendered from
+  // a later sample, as after a stall. It does not count as an arrival, so a
+  // stream of refused samples also goes stale.
+  auto refuse = [&](const std::string& why, std::uint64_t resume) {
+    ++stats.refused;
+    device_.reportInputError(why);
+    stale = true;
+    resume_from = resume;
+    ramp.reset();
+  };
+
   const long ticks = duration_s > 0 ? std::lround(duration_s * options_.rate_hz) : -1;
   stats.loop = loop_.run(ticks, [&](long) {
     const std::uint64_t before = input_.received();
-    if (input_.takeNewest(sample)) {
-      if (sample.values.size() != static_cast<size_t>(renderer_.channels())) {
-        ++stats.refused;
-        device_.reportInputError("sensed vector of " + std::to_string(sample.values.size()) + " channels, the dataset has " +
-                                 std::to_string(renderer_.channels()));
-      } else {
-        worker.submit(sample.values.data());
-        ++submitted;
-        last_arrival = sample.received;
-        arrived[submitted % arrived.size()] = sample.received;
-      }
-    }
+    const bool taken = input_.takeNewest(sample);
     stats.received += input_.received() - before;
+    if (taken) {
+      if (const std::string why = renderer_.bounds().refusal(sample.values); !why.empty()) {
+        refuse(why, submitted + 1);
+        return;
+      }
+      worker.submit(sample.values.data());
+      ++submitted;
+      last_arrival = sample.received;
+      arrived[submitted % arrived.size()] = sample.received;
+    }
     const bool timed_out = Clock::now() - last_arrival > stale_after;
     const bool writer_gone = !stale && input_.aliveWriters() == 0;
     if (submitted == 0 || timed_out || writer_gone) {
@@ -87,6 +98,10 @@ OperatorLoopStats OperatorLoop::run(double duration_s) {
     }
     haptics::RenderedCommand c;
     if (worker.latest(c) && c.sequence >= resume_from) {
+      if (!c.found) {
+        refuse("no dataset row is a finite distance from the sensed vector", c.sequence + 1);
+        return;
+      }
       if (!ramp) ramp.emplace(c.command, options_.ramp_ticks);
       else ramp->target(c.command);
       stale = false;

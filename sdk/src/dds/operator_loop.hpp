@@ -4,8 +4,12 @@
 // fingertip display from a fixed-rate loop (haptics/periodic_loop.hpp, 1 kHz).
 //
 // Per tick:
-//   1. take the newest sensed sample, if any; a vector whose size is not the
-//      renderer's channel count is refused (input error: the device retracts);
+//   1. take the newest sensed sample, if any; a vector the dataset cannot
+//      answer (haptics/sensed_bounds.hpp: a size other than its channel
+//      count, a NaN or infinite value, or one far outside the dataset's
+//      range) is refused: the device is told an input error (it retracts at
+//      once), nothing is commanded in that tick, and the loop resumes as after
+//      a stall. A render that found no dataset row is refused the same way;
 //   2. stale = no sample yet, or the newest arrived more than stale_s ago
 //      (steady clock), or no writer of the stream is alive any more: DDS
 //      liveliness, which drops at once when the publisher deletes its writer
@@ -48,7 +52,7 @@ struct OperatorLoopOptions {
 
 struct OperatorLoopStats {
   std::uint64_t received = 0;        // sensed samples taken from DDS
-  std::uint64_t refused = 0;         // of the wrong size
+  std::uint64_t refused = 0;         // refused samples (size, non-finite, out of range) and empty renders
   std::uint64_t rendered = 0;
   std::uint64_t stalls = 0;          // times the stream went stale (either cause)
   std::uint64_t writers_lost = 0;    // of those, times because no writer was alive any more

@@ -26,6 +26,10 @@ bool isInterfaceName(const std::string& n) {
   });
 }
 
+std::string stripLeadingSlash(const std::string& s) { return !s.empty() && s[0] == '/' ? s.substr(1) : s; }
+
+}  // namespace
+
 bool isRosName(const std::string& name) {
   if (name.empty()) return false;
   size_t start = 0;
@@ -38,9 +42,9 @@ bool isRosName(const std::string& name) {
   }
 }
 
-std::string stripLeadingSlash(const std::string& s) { return !s.empty() && s[0] == '/' ? s.substr(1) : s; }
-
-}  // namespace
+std::string sensorFrameId(const std::string& ros_namespace) {
+  return stripLeadingSlash(ros_namespace) + "_sensor";
+}
 
 void DdsOptions::validate() const {
   if (domain < 0 || domain > 232) throw InputError("dds domain " + std::to_string(domain) + ": must be 0 .. 232");

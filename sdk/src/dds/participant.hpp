@@ -29,6 +29,11 @@ struct DdsOptions {
   void validate() const;           // throws InputError naming the bad field
 };
 
+// Tokens [A-Za-z_][A-Za-z0-9_]* joined by '/' (no leading '/').
+bool isRosName(const std::string& name);
+// The TF frame of a sensor published under `ros_namespace`: "<namespace>_sensor"
+// (without a leading '/'), so two sensors in two namespaces have two frames.
+std::string sensorFrameId(const std::string& ros_namespace);
 // "rt/<namespace>/<name>"; InputError for a namespace or name that is not a ROS name.
 std::string rosTopicName(const std::string& ros_namespace, const std::string& name);
 // The Cyclone DDS configuration (XML) for `interface` and `peers`; empty when neither is set.

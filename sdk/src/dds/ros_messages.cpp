@@ -1,5 +1,6 @@
 #include "dds/ros_messages.hpp"
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstring>
@@ -22,10 +23,10 @@ RosTime rosTime(double s) {
 
 double seconds(const RosTime& t) { return static_cast<double>(t.sec) + 1e-9 * static_cast<double>(t.nanosec); }
 
-std::array<float, 6> joyAxes(const Input6& v) {
+std::array<float, 6> joyAxes(const Input6& v, const std::array<double, 6>& working_range) {
   const auto a = v.asArray();
   std::array<float, 6> out{};
-  for (size_t i = 0; i < 6; ++i) out[i] = static_cast<float>(a[i]);
+  for (size_t i = 0; i < 6; ++i) out[i] = static_cast<float>(std::clamp(a[i] / working_range[i], -1.0, 1.0));
   return out;
 }
 

@@ -2,10 +2,15 @@
 // (pure conversions, no DDS; docs/dds/README.md has the full mapping).
 //
 //   stamp: seconds -> builtin_interfaces/Time {sec, nanosec}, nanosec in [0, 1e9).
-//   sensor_msgs/Joy: axes = [dx, dy, dz, yaw, pitch, roll] of the 6-D input
-//       (CONVENTIONS.md order and units: mm, degrees; float32 as Joy defines),
-//       buttons = [press button, in contact] (0/1).
-//   geometry_msgs/PoseStamped in frame S ("onetip_sensor"), ROS units (m):
+//   sensor_msgs/Joy: axes = the 6-D input [dx, dy, dz, yaw, pitch, roll]
+//       (docs/reference.md order) as a joystick reports it, each axis divided
+//       by its working range and clamped: a_i = clamp(v_i / w_i, -1, 1), w_i
+//       from SensorOptions::working_range (mm, mm, mm, deg, deg, deg; the
+//       half-width of the symmetric range |v_i| <= w_i; dz, a press depth in
+//       [0, w], maps onto [0, 1]), as spacenav_node scales a SpaceMouse by its
+//       full scale; float32 as Joy defines. buttons = [press button, in contact] (0/1).
+//       The unscaled input (mm, degrees) is the input6 topic's Float64MultiArray.
+//   geometry_msgs/PoseStamped in frame S ("<namespace>_sensor"), ROS units (m):
 //       position = T(c0) - c0 in S = (dx, dy, -dz) * 1e-3 m,
 //       orientation = the unit quaternion (x, y, z, w) of
 //       R = Rz(yaw) Ry(roll) Rx(pitch) (CONVENTIONS.md; w >= 0).
@@ -39,7 +44,7 @@ struct RosTime {
 RosTime rosTime(double seconds);
 double seconds(const RosTime& t);
 
-std::array<float, 6> joyAxes(const Input6& v);
+std::array<float, 6> joyAxes(const Input6& v, const std::array<double, 6>& working_range);
 // (x, y, z, w)
 std::array<double, 4> quaternionXyzw(const Input6& v);
 std::array<double, 3> positionMetres(const Input6& v);

@@ -15,10 +15,13 @@ void positive(double v, const char* name) {
 QosPtr common(StreamKind kind, const StreamQos& q) {
   q.validate();
   QosPtr qos(dds_create_qos(), dds_delete_qos);
-  dds_qset_durability(qos.get(), DDS_DURABILITY_VOLATILE);
+  dds_qset_durability(qos.get(), kind == StreamKind::latched ? DDS_DURABILITY_TRANSIENT_LOCAL : DDS_DURABILITY_VOLATILE);
   dds_qset_liveliness(qos.get(), DDS_LIVELINESS_AUTOMATIC, toDuration(q.lease_s));
   if (kind == StreamKind::high_rate) {
     dds_qset_reliability(qos.get(), DDS_RELIABILITY_BEST_EFFORT, 0);
+    dds_qset_history(qos.get(), DDS_HISTORY_KEEP_LAST, 1);
+  } else if (kind == StreamKind::latched) {
+    dds_qset_reliability(qos.get(), DDS_RELIABILITY_RELIABLE, toDuration(q.max_blocking_s));
     dds_qset_history(qos.get(), DDS_HISTORY_KEEP_LAST, 1);
   } else {
     dds_qset_reliability(qos.get(), DDS_RELIABILITY_RELIABLE, toDuration(q.max_blocking_s));

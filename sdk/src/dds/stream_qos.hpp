@@ -10,6 +10,10 @@
 //       RELIABLE (a writer blocks at most max_blocking_s on a full queue),
 //       KEEP_LAST `event_history`, VOLATILE, the same liveliness; no deadline
 //       (events are sporadic).
+//   latched (tf_static): RELIABLE, KEEP_LAST 1, TRANSIENT_LOCAL: the writer
+//       keeps its last sample and gives it to every reader that matches later
+//       (a reader must ask for transient local durability to get it), the
+//       same liveliness; what ROS 2's static transform broadcaster uses.
 // ROS 2 equivalents: high_rate is rclcpp::SensorDataQoS() (ROS 2 subscribers
 // must ask for best effort, e.g. `ros2 topic echo --qos-reliability best_effort`);
 // events is the default reliable profile with a deeper history.
@@ -22,7 +26,7 @@
 
 namespace onetip::dds {
 
-enum class StreamKind { high_rate, events };
+enum class StreamKind { high_rate, events, latched };
 
 struct StreamQos {
   double deadline_s = 0.1;       // offered by high-rate writers

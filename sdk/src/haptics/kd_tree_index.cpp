@@ -265,6 +265,7 @@ void KdTreeIndex::search(const float* query, int k, std::vector<Neighbor>& out) 
     if (std::max(d0, d1) <= result.worstDist()) self(self, node.child[1 - near]);
   };
   visit(visit, 0);
+  out.resize(result.size());  // a query no row is a finite distance from (NaN, Inf) finds none
 }
 
 size_t KdTreeIndex::size() const noexcept { return impl_->points.size() / static_cast<size_t>(dims()); }

@@ -44,6 +44,8 @@ class KdTreeIndex {
   KdTreeIndex& operator=(const KdTreeIndex&) = delete;
 
   // The min(k, size()) nearest rows to `query` (dims floats), closest first.
+  // Only rows at a finite distance qualify: a query with a NaN or infinite
+  // value has none, and `out` is then empty (never the previous call's rows).
   // `out` is resized; no allocation once it has held k neighbours. k >= 1.
   void search(const float* query, int k, std::vector<Neighbor>& out) const;
 

@@ -1,6 +1,7 @@
 #include "haptics/knn_renderer.hpp"
 
 #include <cmath>
+#include <limits>
 
 #include "core/error.hpp"
 
@@ -19,6 +20,7 @@ KnnRenderer::KnnRenderer(const TactileDataset& dataset, const KdTreeOptions& tre
     : space_(SearchSpace::fromDataset(checked(dataset))),
       commands_(dataset.commands),
       index_(space_.map(dataset), dataset.channels, tree),
+      bounds_(SensedBounds::fromDataset(dataset)),
       query_(static_cast<size_t>(dataset.channels)) {}
 
 RenderResult KnnRenderer::render(const double* s, int n) const {
@@ -30,7 +32,11 @@ RenderResult KnnRenderer::render(const double* s, int n) const {
 
 RenderResult KnnRenderer::combine(const std::vector<Neighbor>& neighbors) const {
   RenderResult r;
-  if (neighbors.empty()) return r;
+  if (neighbors.empty()) {
+    r.command.fill(std::numeric_limits<double>::quiet_NaN());
+    r.nearest_distance = std::numeric_limits<double>::infinity();
+    return r;
+  }
   r.neighbors_used = static_cast<int>(neighbors.size());
   r.nearest_row = neighbors.front().id;
   r.nearest_distance = std::sqrt(neighbors.front().distance_sq);

@@ -10,6 +10,10 @@
 // resolution, where w would overflow) the weights are infinite; m-bar is then
 // the plain mean of the commands of the rows at that distance. n = 1 is the plain nearest neighbour (Eq. 3). Commands are in
 // degrees; the result stays inside the convex hull of the dataset commands.
+// A query no row is a finite distance from (a NaN or infinite value, or one
+// so large it overflows the float search space) has no neighbour: the result
+// has neighbors_used 0 and a NaN command, which every device driver refuses
+// (it retracts), so no stale or default command can stand in for it.
 //
 // render() reuses internal buffers, so one renderer must not be used from two
 // threads at once (build one per thread; building is cheap next to loading).
@@ -18,8 +22,9 @@
 #include <array>
 #include <vector>
 
-#include "haptics/search_space.hpp"
 #include "haptics/kd_tree_index.hpp"
+#include "haptics/search_space.hpp"
+#include "haptics/sensed_bounds.hpp"
 #include "haptics/tactile_dataset.hpp"
 
 namespace onetip::haptics {
@@ -27,8 +32,9 @@ namespace onetip::haptics {
 constexpr double kExactMatchDistanceSq = 1e-20;
 
 struct RenderResult {
-  std::array<double, 3> command{};  // m-bar, degrees
-  int neighbors_used = 0;           // min(n, dataset rows)
+  std::array<double, 3> command{};  // m-bar, degrees (NaN when nothing was found)
+  int neighbors_used = 0;           // min(n, dataset rows); 0: no row qualified
+  bool found() const noexcept { return neighbors_used > 0; }
   bool exact_match = false;         // the nearest row is at distance ~0
   double nearest_distance = 0.0;    // standardised distance to the nearest row
   std::uint32_t nearest_row = 0;
@@ -48,12 +54,15 @@ class KnnRenderer {
   const ChannelScaling& scaling() const noexcept { return space_.scaling(); }
   const SearchSpace& space() const noexcept { return space_; }
   const KdTreeIndex& index() const noexcept { return index_; }
+  // The sensed vectors this dataset can answer (sensed_bounds.hpp).
+  const SensedBounds& bounds() const noexcept { return bounds_; }
   const std::vector<float>& commands() const noexcept { return commands_; }
 
  private:
   SearchSpace space_;
   std::vector<float> commands_;
   KdTreeIndex index_;
+  SensedBounds bounds_;
   mutable std::vector<float> query_;
   mutable std::vector<Neighbor> found_;
 };

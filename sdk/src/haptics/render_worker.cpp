@@ -42,8 +42,9 @@ void RenderWorker::run() {
     const RenderResult r = renderer_.render(s.values.data(), neighbors_);
     RenderedCommand out;
     out.sequence = s.sequence;
+    out.found = r.found();
     out.command = r.command;
-    out.vibration = table_ ? &table_->lookup(r.command) : nullptr;
+    out.vibration = table_ && out.found ? &table_->lookup(r.command) : nullptr;
     out.query_us = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count();
     output_.publish(out);
     rendered_.fetch_add(1, std::memory_order_relaxed);

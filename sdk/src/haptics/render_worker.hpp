@@ -27,8 +27,9 @@ namespace onetip::haptics {
 
 struct RenderedCommand {
   std::uint64_t sequence = 0;                 // of the sensed vector it answers (0: none yet)
-  std::array<double, 3> command{};            // servo angles, degrees
-  const TransferFunction* vibration = nullptr;  // table entry of the command (nullptr without a table)
+  bool found = false;                         // a dataset row qualified (knn_renderer.hpp); false: do not command
+  std::array<double, 3> command{};            // servo angles, degrees (NaN when !found)
+  const TransferFunction* vibration = nullptr;  // table entry of the command (nullptr without a table or found)
   double query_us = 0.0;                      // time the render took
 };
 

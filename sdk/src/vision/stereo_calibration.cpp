@@ -7,6 +7,20 @@
 
 namespace onetip::vision {
 
+namespace {
+// fx, fy deviations from calibrateCamera's intrinsic deviations (fx fy cx cy
+// k1 ...); a NaN (a singular fit) becomes +inf, "not determined".
+cv::Vec2d focalDeviation(const cv::Mat& sd) {
+  cv::Vec2d out{INFINITY, INFINITY};
+  if (sd.total() < 2) return out;
+  for (int i = 0; i < 2; ++i) {
+    const double v = sd.at<double>(i);
+    if (std::isfinite(v)) out[i] = v;
+  }
+  return out;
+}
+}  // namespace
+
 void StereoCalibrationOptions::validate() const {
   if (min_pairs < 1) throw InputError("stereo calibration: min_pairs: must be at least 1");
 }
@@ -43,9 +57,19 @@ StereoCalibrationResult calibrateStereo(const std::vector<BoardViewPair>& pairs,
   result.pairs_used = static_cast<int>(pairs.size());
   cv::Mat K1, D1, K2, D2, R, T, E, F;
   try {
-    std::vector<cv::Mat> rvecs, tvecs;
-    result.rms_left_px = cv::calibrateCamera(object, left, left_size, K1, D1, rvecs, tvecs);
-    result.rms_right_px = cv::calibrateCamera(object, right, right_size, K2, D2, rvecs, tvecs);
+    std::vector<cv::Mat> rvecs, tvecs, unused_r, unused_t;
+    cv::Mat sd_left, sd_right, sd_extrinsic, per_view;
+    result.rms_left_px = cv::calibrateCamera(object, left, left_size, K1, D1, rvecs, tvecs, sd_left,
+                                             sd_extrinsic, per_view);
+    result.rms_right_px = cv::calibrateCamera(object, right, right_size, K2, D2, unused_r, unused_t,
+                                              sd_right, sd_extrinsic, per_view);
+    result.sd_f_left = focalDeviation(sd_left);
+    result.sd_f_right = focalDeviation(sd_right);
+    for (size_t i = 0; i < rvecs.size(); ++i) {
+      const cv::Mat r = rvecs[i].reshape(1, 3), t = tvecs[i].reshape(1, 3);
+      result.board_rvecs.emplace_back(r.at<double>(0), r.at<double>(1), r.at<double>(2));
+      result.board_tvecs.emplace_back(t.at<double>(0), t.at<double>(1), t.at<double>(2));
+    }
     const int flags = options.refine_jointly ? cv::CALIB_USE_INTRINSIC_GUESS : cv::CALIB_FIX_INTRINSIC;
     // Right view size: the same for both in stereoCalibrate's API, which only
     // uses it for initialisation that USE_INTRINSIC_GUESS / FIX_INTRINSIC skip.

@@ -10,7 +10,11 @@
 //    CALIB_FIX_INTRINSIC (R, T only) or, by default, CALIB_USE_INTRINSIC_GUESS
 //    (refines intrinsics and R, T jointly; on OpenCV's real stereo set this
 //    gives 0.218 px against 0.221 px with fixed intrinsics).
-// The RMS is the stereo reprojection error over both views, in pixels.
+// The RMS is the stereo reprojection error over both views, in pixels. The
+// single-view fits also give the standard deviation of each focal length as
+// the fit estimates it (cv::calibrateCamera's stdDeviationsIntrinsics: the
+// residual's variance through the inverse normal matrix), which is how far
+// the poses' number and spread pin f down (vision/calibration_acceptance.hpp).
 // R, T follow docs/reference.md (X_R = R X_L + T), T in mm.
 #pragma once
 
@@ -39,6 +43,11 @@ struct StereoCalibrationResult {
   double rms_left_px = 0.0;   // single-view calibrations
   double rms_right_px = 0.0;
   int pairs_used = 0;
+  // One standard deviation of fx, fy of each single-view fit (px); infinite
+  // when the poses leave f undetermined (a singular normal matrix).
+  cv::Vec2d sd_f_left{0, 0}, sd_f_right{0, 0};
+  // The board's pose in the left camera per pair (Rodrigues vector, mm).
+  std::vector<cv::Vec3d> board_rvecs, board_tvecs;
 };
 
 // layout supplies image_width, image_height, split_x and the flips; the view

@@ -105,8 +105,8 @@ void toRecorder(benchmark::State& state, Load load, const dds::DdsOptions& net, 
       const std::vector<double> v(75, 0.01);
       input::InputEvent e{EventType::state_changed, 0, {}, ContactState::stick, {}};
       paced(state, 1.0 / 30, [&](long i) {
-        frames.publishFrame(syntheticFrame(static_cast<double>(i) / 30));
-        frames.publishEvent(i, e);
+        frames.publishFrame(syntheticFrame(static_cast<double>(i) / 30), std::chrono::steady_clock::now());
+        frames.publishEvent(i, e, std::chrono::steady_clock::now());
         sensed.publish(static_cast<double>(i) / 30, v);
       });
       for (const char* t : {"joy", "pose", "markers", "events", "haptic/sensed"}) sent[t] = state.iterations();

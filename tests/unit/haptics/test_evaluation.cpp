@@ -29,6 +29,7 @@
 #include "haptics/display_grid.hpp"
 #include "haptics/objective_evaluation.hpp"
 #include "haptics/onetip_contact_sensor.hpp"
+#include "sanitizer_leg.hpp"
 
 using namespace onetip::haptics;
 
@@ -67,6 +68,7 @@ std::vector<EvaluationRow> runBiotacEvaluation(double side_tilt_deg,
 }  // namespace
 
 TEST(ObjectiveEvaluation, BiotacErrorFallsWithMoreDofAFinerStepAndMoreNeighbours) {
+  ONETIP_SWEEP_RUNS_IN_RELEASE_ONLY();
   const auto rows = runBiotacEvaluation(InteractionOptions{}.side_tilt_deg);
   ASSERT_EQ(rows.size(), 27u * 6u);
   const auto c = byCondition(rows);
@@ -103,6 +105,7 @@ TEST(ObjectiveEvaluation, BiotacErrorFallsWithMoreDofAFinerStepAndMoreNeighbours
 }
 
 TEST(ObjectiveEvaluation, BiotacMoreNeighboursHelpWhenEveryRemoteContactIsReachable) {
+  ONETIP_SWEEP_RUNS_IN_RELEASE_ONLY();
   const auto c = byCondition(runBiotacEvaluation(0.0));
   auto e = [&](double step, int n, int d) { return c.at({step, n, d}).mean_normalized_error; };
   for (int d : {1, 2, 3}) {
@@ -119,6 +122,7 @@ TEST(ObjectiveEvaluation, BiotacMoreNeighboursHelpWhenEveryRemoteContactIsReacha
 // instantaneous device exactly; the paper's servos lag, which costs a little
 // (docs/haptics: +0.1-1.7 % per DoF in the full run).
 TEST(ObjectiveEvaluation, ServoDynamicsSitBetweenTheRendererAndTheDevice) {
+  ONETIP_SWEEP_RUNS_IN_RELEASE_ONLY();
   const double tilt = InteractionOptions{}.side_tilt_deg;
   const auto instant = runBiotacEvaluation(tilt);
   ServoResponseOptions ideal;
@@ -137,6 +141,7 @@ TEST(ObjectiveEvaluation, ServoDynamicsSitBetweenTheRendererAndTheDevice) {
 }
 
 TEST(ObjectiveEvaluation, OnetipErrorFallsWithMoreDofAndAFinerStep) {
+  ONETIP_SWEEP_RUNS_IN_RELEASE_ONLY();
   const OnetipContactSensor sensor;  // deterministic: one instance serves all three roles
   const PlatformKinematics device;
   const TactileDataset full = simulateDataset(device, sensor, 15.0);  // 1,331 rows

@@ -79,3 +79,19 @@ TEST(RenderCli, BadInputGivesOneLineErrorAndNoOutput) {
     EXPECT_FALSE(fs::exists(out)) << args;
   }
 }
+
+// A finite float32 query can still overflow the standardised float search
+// space (3e38 over a channel with sd 0.0005): no row is a finite distance from
+// it, and the command says so instead of writing a NaN (or a stale) command.
+TEST(RenderCli, QueryThatOverflowsTheSearchSpaceIsRefused) {
+  const test_support::ScratchDir scratch("onetip-render-cli");
+  const auto dir = scratch.path();
+  write(dir / "d.csv", "m1,m2,m3,s1\n30,30,30,0\n60,60,60,0.001\n");
+  write(dir / "q.csv", "s1\n0.0005\n3e38\n");
+  const std::string out = (dir / "m.csv").string();
+  const auto r = run("--dataset " + (dir / "d.csv").string() + " --queries " + (dir / "q.csv").string() + " --out " + out);
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.output.find("query 2: no dataset row is a finite distance"), std::string::npos) << r.output;
+  EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+  EXPECT_FALSE(fs::exists(out));
+}

@@ -11,6 +11,7 @@
 
 #include "rendered_replay.hpp"
 #include "replay_metrics.hpp"
+#include "sanitizer_leg.hpp"
 
 using namespace onetip;
 using namespace onetip::poseval;
@@ -61,19 +62,26 @@ class EndToEndTranslation : public ::testing::TestWithParam<std::string> {};
 // Issue: translation RMSE <= 0.05 mm per axis over |dx|, |dy| <= 1.5 mm, dz in [0, 3] mm. sweep_x pins
 // the creep test (pose/stick_set_creep.hpp): without it, at the end of the +1.5 mm stroke a stick set of
 // creeping markers carried the estimate and 0.2 mm were lost to the end.
-TEST_P(EndToEndTranslation, RmseWithinRange) { expectRmse(GetParam(), inTranslationRange, 0, 0.05); }
+TEST_P(EndToEndTranslation, RmseWithinRange) {
+  ONETIP_SWEEP_RUNS_IN_RELEASE_ONLY();
+  expectRmse(GetParam(), inTranslationRange, 0, 0.05);
+}
 INSTANTIATE_TEST_SUITE_P(Pose, EndToEndTranslation, ::testing::Values("press", "slide_x", "sweep_x"));
 
 class EndToEndRotation : public ::testing::TestWithParam<std::string> {};
 
 // Issue: rotation RMSE <= 1.0 deg per axis over yaw in [-15, 15], pitch and roll in [-40, 40] (0.5 mm
 // depth). Pitch pins the noise floor of the thresholds: with the rest jitter alone it froze at 34 deg.
-TEST_P(EndToEndRotation, RmseWithinWorkingRange) { expectRmse(GetParam(), inRotationRange, 3, 1.0); }
+TEST_P(EndToEndRotation, RmseWithinWorkingRange) {
+  ONETIP_SWEEP_RUNS_IN_RELEASE_ONLY();
+  expectRmse(GetParam(), inRotationRange, 3, 1.0);
+}
 INSTANTIATE_TEST_SUITE_P(Pose, EndToEndRotation, ::testing::Values("roll", "pitch", "twist"));
 
 // Issue: sliding in x stays within 10% of the true displacement up to 3 mm
 // (with a 0.05 mm floor, the translation accuracy, for the first tenths).
 TEST(EndToEndSliding, LinearUpToThreeMillimetres) {
+  ONETIP_SWEEP_RUNS_IN_RELEASE_ONLY();
   int checked = 0;
   for (const auto& f : rendered("slide_x").frames) {
     if (!f.contact || !f.gt_contact || f.t < 0.7 || f.gt.dx <= 0 || f.gt.dx > 3.0 || f.gt.dz < 0.8) continue;
@@ -86,6 +94,7 @@ TEST(EndToEndSliding, LinearUpToThreeMillimetres) {
 // The field-level tests imitate the front end with 0.0006 mm per axis
 // (sim_replay.hpp); the rendered path must not be much noisier than that.
 TEST(EndToEndMarkers, FrontEndErrorMatchesTheFieldLevelNoise) {
+  ONETIP_SWEEP_RUNS_IN_RELEASE_ONLY();
   const RenderedReplay& r = rendered("press");
   for (int k = 0; k < 3; ++k) EXPECT_LE(r.marker_rmse_mm[k], 0.0015) << "axis " << k;
 }

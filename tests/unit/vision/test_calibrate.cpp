@@ -3,7 +3,6 @@
 // photos against the reference calibration, plus its bad-input contract.
 #include <gtest/gtest.h>
 
-#include <array>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -16,6 +15,7 @@
 #include "core/pattern.hpp"
 #include "vision/calibration_board.hpp"
 #include "vision/stereo_calibration.hpp"
+#include "calibrate_cli.hpp"
 #include "scratch_dir.hpp"
 #include "test_paths.hpp"
 
@@ -107,27 +107,10 @@ TEST(StereoCalibration, RecoversAKnownRigFromExactViews) {
   EXPECT_THROW(calibrateStereo({pairs[0], pairs[1]}, pattern, truth), InputError);  // < 3 pairs
 }
 
-struct CliRun {
-  int status = -1;
-  std::string out;  // stdout + stderr
-};
+using onetip::test::CliRun;
+using onetip::test::lastLine;
 
-CliRun runCli(const std::string& args) {
-  CliRun run;
-  const std::string cmd = std::string(onetip::test::cliPath()) + " calibrate " + args + " 2>&1";
-  FILE* pipe = popen(cmd.c_str(), "r");
-  if (pipe == nullptr) return run;
-  std::array<char, 512> buf{};
-  while (fgets(buf.data(), buf.size(), pipe) != nullptr) run.out += buf.data();
-  run.status = pclose(pipe);
-  return run;
-}
-
-std::string lastLine(const std::string& text) {
-  std::string t = text;
-  while (!t.empty() && t.back() == '\n') t.pop_back();
-  return t.substr(t.rfind('\n') == std::string::npos ? 0 : t.rfind('\n') + 1);
-}
+CliRun runCli(const std::string& args) { return onetip::test::runCalibrate(args); }
 
 double angleDeg(const cv::Matx33d& A, const cv::Matx33d& B) {
   cv::Vec3d r;
@@ -176,13 +159,7 @@ TEST(CalibrateCommand, RealStereoPhotosMatchTheReference) {
   // The same frames with both halves mirrored, calibrated with the flips:
   // the views after the flip are the originals, so the result is the same.
   const onetip::test_support::ScratchDir flipped("onetip-calib");
-  for (int i = 1; i <= 9; ++i) {
-    const std::string name = "pair0" + std::to_string(i) + ".png";
-    cv::Mat f = cv::imread(kReal + "sbs/" + name, cv::IMREAD_GRAYSCALE);
-    cv::flip(f(cv::Rect(0, 0, 640, 480)).clone(), f(cv::Rect(0, 0, 640, 480)), 1);
-    cv::flip(f(cv::Rect(640, 0, 640, 480)).clone(), f(cv::Rect(640, 0, 640, 480)), 1);
-    cv::imwrite(flipped.file(name), f);
-  }
+  onetip::test::writeMirroredPairs(kReal + "sbs", flipped.path().string(), true, true);
   const std::string out2 = dir.file("flipped.yaml");
   const CliRun run2 = runCli("--pattern " + pattern + " --input " + flipped.path().string() + " --out " +
                              out2 + " --split-x 640 --flip-left --flip-right");

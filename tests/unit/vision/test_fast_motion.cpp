@@ -16,6 +16,7 @@
 #include "synthetic_board.hpp"
 #include "vision/grid_tracker.hpp"
 #include "vision/triangulator.hpp"
+#include "sanitizer_leg.hpp"
 
 namespace onetip::vision {
 namespace {
@@ -38,6 +39,7 @@ Totals play(const bench::CampaignRun& run) {
 }
 
 TEST(FastMotion, SlideWithReversalsAtHalfASquarePerFrameLosesAndSwapsNothing) {
+  ONETIP_SWEEP_RUNS_IN_RELEASE_ONLY();
   // 17x17, noise 6, no blur (run index 17 of the campaign's conditions).
   const Totals t = play(bench::slideRun(17, 0.5, false));
   EXPECT_EQ(t.gross, 0);
@@ -46,6 +48,7 @@ TEST(FastMotion, SlideWithReversalsAtHalfASquarePerFrameLosesAndSwapsNothing) {
 }
 
 TEST(FastMotion, ReversalAfterHeavyShearOnTheFinestPatternSwapsNothing) {
+  ONETIP_SWEEP_RUNS_IN_RELEASE_ONLY();
   // 25x25 (0.8 mm squares), noise 3, blur 1.2 px (run index 14).
   const Totals t = play(bench::shearRun(14, 0.4));
   EXPECT_EQ(t.gross, 0);

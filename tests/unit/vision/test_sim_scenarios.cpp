@@ -15,6 +15,7 @@
 #include "sim/simulator.hpp"
 #include "vision/grid_tracker.hpp"
 #include "test_paths.hpp"
+#include "sanitizer_leg.hpp"
 
 namespace onetip::vision {
 namespace {
@@ -73,6 +74,7 @@ std::vector<int> framesToRender(const sim::Scenario& scenario) {
 }
 
 TEST(SimScenarios, LargestDeformationDetectedWithoutSwaps) {
+  ONETIP_SWEEP_RUNS_IN_RELEASE_ONLY();
   const std::filesystem::path dir = std::filesystem::path(onetip::test::sourceDir()) / "samples/scenarios";
   std::vector<std::filesystem::path> files;
   for (const auto& e : std::filesystem::directory_iterator(dir))
