@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Installs what is missing, builds Release, builds the API reference (Doxygen, warnings are errors)
+# Installs what the SDK and the whole suite need and is missing, builds Release, builds the API reference (Doxygen, warnings are errors)
 # and runs the whole test suite with ctest. Extra arguments go to ctest (e.g. -L sim to run one area).
 set -euo pipefail
 cd "$(dirname "$0")/.."
