@@ -18,7 +18,7 @@ fi
 source .ci/build-env.sh
 # ONETIP_WITH_DDS takes its default, OFF, when CMake is told Cyclone DDS is not there: the SDK,
 # the CLI (built for VisionEndToEnd) and these tests must build and pass without it.
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DONETIP_BUILD_BENCHMARKS=OFF -DONETIP_BUILD_PYTHON=OFF \
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DONETIP_BUILD_TESTS=ON -DONETIP_BUILD_BENCHMARKS=OFF -DONETIP_BUILD_PYTHON=OFF \
   -DONETIP_BUILD_CSHARP=OFF -DCMAKE_DISABLE_FIND_PACKAGE_CycloneDDS=ON >/dev/null
 if ! grep -q '^ONETIP_WITH_DDS:BOOL=OFF$' build/CMakeCache.txt; then
   echo "standalone: ONETIP_WITH_DDS is not OFF without Cyclone DDS" >&2

@@ -17,6 +17,11 @@ struct GamepadState {
 
 int main(int argc, char** argv) {
   const std::string source = argc > 1 ? argv[1] : "sim:" ONETIP_SOURCE_DIR "/samples/scenarios/sweep_x.yaml";
+  if (argc == 3 || argc > 4 || (argc > 1 && argv[1][0] == '-')) {  // a calibration needs its pattern too
+    std::fprintf(stderr, "usage: %s [SOURCE [CALIB PATTERN]]   (default SOURCE: sim:samples/scenarios/sweep_x.yaml)\n",
+                 argv[0]);
+    return 2;
+  }
   try {
     onetip::Sensor sensor(onetip::SensorConfig(source, argc > 3 ? argv[2] : "", argc > 3 ? argv[3] : ""));
     sensor.start();

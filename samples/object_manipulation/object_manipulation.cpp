@@ -75,6 +75,12 @@ void draw(const Pose& p) {
 
 int main(int argc, char** argv) {
   const std::string source = argc > 1 ? argv[1] : "sim:" ONETIP_SOURCE_DIR "/samples/scenarios/demo_touch.yaml";
+  if (argc == 3 || argc > 4 || (argc > 1 && argv[1][0] == '-')) {  // a calibration needs its pattern too
+    std::fprintf(stderr,
+                 "usage: %s [SOURCE [CALIB PATTERN]]   (default SOURCE: sim:samples/scenarios/demo_touch.yaml)\n",
+                 argv[0]);
+    return 2;
+  }
   const double gain_mm = 3;  // 1 mm of finger motion moves the cube 3 mm
   try {
     onetip::Sensor sensor(onetip::SensorConfig(source, argc > 3 ? argv[2] : "", argc > 3 ? argv[3] : ""));

@@ -6,6 +6,10 @@
 #include <string>
 
 int main(int argc, char** argv) {
+  if (argc > 2 || (argc > 1 && argv[1][0] == '-')) {
+    std::fprintf(stderr, "usage: %s [SCENARIO.yaml]   (default: samples/scenarios/press.yaml)\n", argv[0]);
+    return 2;
+  }
   const std::string scenario = argc > 1 ? argv[1] : ONETIP_SOURCE_DIR "/samples/scenarios/press.yaml";
   try {
     // sim: sources bring their own calibration and pattern

@@ -35,6 +35,12 @@ double stickSpeed(double t) { return 5 * std::sin(0.8 * t); }
 
 int main(int argc, char** argv) {
   const std::string source = argc > 1 ? argv[1] : "sim:" ONETIP_SOURCE_DIR "/samples/scenarios/demo_touch.yaml";
+  if (argc == 3 || argc > 4 || (argc > 1 && argv[1][0] == '-')) {  // a calibration needs its pattern too
+    std::fprintf(stderr,
+                 "usage: %s [SOURCE [CALIB PATTERN]]   (default SOURCE: sim:samples/scenarios/demo_touch.yaml)\n",
+                 argv[0]);
+    return 2;
+  }
   const double k_rate = 3, muzzle_speed = 30, g = 9.81, target_x = 60, target_y = 25;
   try {
     onetip::SensorOptions options;

@@ -18,6 +18,7 @@ namespace {
 
 int runCalibrate(const Args& args) {
   refuseOutputClashes(args, {"out"}, {"pattern", "input"});
+  refuseUnwritableOutputs(args, {"out"}, {});
   calib::StereoCalibrationRun run;
   run.pattern_path = args.get("pattern");
   run.input = args.get("input");

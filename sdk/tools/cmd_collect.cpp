@@ -32,6 +32,7 @@ std::unique_ptr<haptics::TactileSensorModel> makeSensor(const std::string& name,
 
 int runCollect(const Args& args) {
   refuseOutputClashes(args, {"out", "progress-file"}, {});
+  refuseUnwritableOutputs(args, {"out", "progress-file"}, {});
   calib::CollectionOptions options;
   options.step_deg = args.getDouble("step", 3.0);
   options.out_path = args.get("out");

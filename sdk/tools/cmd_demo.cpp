@@ -2,6 +2,7 @@
 // through the simulator, runs the SDK on every rendered frame, prints the
 // SDK's 6-D estimate beside the simulator's truth as it goes, and writes
 // est_pose.csv, the ground truth and a contact sheet of what the camera saw.
+// The folder appears whole at the end (an existing, non-empty one is refused);
 // Ctrl-C or SIGTERM stops after the current frame and writes the frames done.
 #include <cmath>
 #include <cstdio>
@@ -10,10 +11,12 @@
 
 #include "command.hpp"
 #include "contact_sheet.hpp"
+#include "core/atomic_file.hpp"
 #include "core/csv_table.hpp"
 #include "core/error.hpp"
 #include "core/pose_csv.hpp"
 #include "interrupt.hpp"
+#include "output_paths.hpp"
 #include "pipeline/frame_processor.hpp"
 #include "sim/simulator.hpp"
 
@@ -28,11 +31,14 @@ std::string vectorText(const char* label, const Input6& v) {
 }
 
 int runDemo(const Args& args) {
+  refuseOutputClashes(args, {"out"}, {"scenario"});
+  refuseUnwritableOutputs(args, {}, {"out"});
   sim::Simulator sim(sim::loadScenario(args.get("scenario")));
-  const std::filesystem::path out(args.get("out"));
-  std::error_code ec;
-  std::filesystem::create_directories(out, ec);
-  if (ec) throw InputError(out.string() + ": cannot create the folder (" + ec.message() + ")");
+  const std::string out_dir = args.get("out");
+  // Filled under a staging folder and moved into place at the end, as `onetip sim` does: an existing
+  // folder with anything in it is refused, never overwritten, and a failed run leaves nothing.
+  AtomicDir staging(out_dir);
+  const std::filesystem::path out(staging.path());
   pipeline::FrameProcessor processor(sim.calibration(), sim.pattern());
   CsvWriter est((out / "est_pose.csv").string(), poseCsvHeader(true));
   CsvWriter truth((out / "gt_pose.csv").string(), poseCsvHeader(false));
@@ -65,8 +71,9 @@ int runDemo(const Args& args) {
   }
   est.commit();
   truth.commit();
-  const std::string sheet_path = (out / "contact_sheet.png").string();
-  sheet.save(sheet_path);
+  sheet.save((out / "contact_sheet.png").string());
+  staging.commit();
+  const std::string sheet_path = (std::filesystem::path(out_dir) / "contact_sheet.png").string();
   if (both > 0) {
     const char* names[6] = {"dx", "dy", "dz", "yaw", "pitch", "roll"};
     std::printf("RMS error over %d frames in contact:", both);
@@ -74,7 +81,7 @@ int runDemo(const Args& args) {
     std::printf("\n");
   }
   std::cout << (interruptRequested() ? "interrupted: " : "") << "wrote " << sheet_path
-            << ", est_pose.csv and gt_pose.csv in " << out.string() << "\n";
+            << ", est_pose.csv and gt_pose.csv in " << out_dir << "\n";
   return interruptRequested() ? kInterruptedExit : 0;
 }
 
@@ -83,7 +90,7 @@ const CommandRegistrar reg{{
     "The main job on the simulated sensor: play a scenario, run the SDK on every rendered frame, print its 6-D "
     "estimate beside the truth, write est_pose.csv, gt_pose.csv and contact_sheet.png.",
     {{"scenario", "scenario YAML file (samples/scenarios/demo_touch.yaml)", false, true},
-     {"out", "output folder", false, true}},
+     {"out", "output folder to create (absent or empty; nothing else is ever deleted or replaced)", false, true}},
     runDemo}};
 
 }  // namespace

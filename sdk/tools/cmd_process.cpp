@@ -23,6 +23,7 @@ using Clock = std::chrono::steady_clock;
 
 int runProcess(const Args& args) {
   refuseOutputClashes(args, {"out", "markers", "timing"}, {"calib", "pattern", "reference", "input"});
+  refuseUnwritableOutputs(args, {"out", "markers", "timing"}, {});
   const std::string calib_file = args.optional("calib").value_or("");
   const std::string pattern_file = args.optional("pattern").value_or("");
   pipeline::checkRigFiles(calib_file, pattern_file);
@@ -41,7 +42,9 @@ int runProcess(const Args& args) {
   if (auto p = args.optional("markers")) markers = std::make_unique<CsvWriter>(*p, std::vector<std::string>{"frame", "id", "x", "y", "z"});
   if (auto p = args.optional("timing")) timing = std::make_unique<CsvWriter>(*p, std::vector<std::string>{"frame", "stage", "ms"});
 
-  int processed = 0, skipped = 0, lost = 0, errors = 0, consecutive_errors = 0;
+  // unreadable: frames the source could not read or decode, or that cannot be used (wrong size, blank);
+  // lost: readable frames on which too few markers were found or tracked.
+  int processed = 0, unreadable = 0, lost = 0, errors = 0, consecutive_errors = 0;
   std::vector<double> process_ms;
   const bool quiet = args.has("quiet");
   // Ctrl-C or SIGTERM ends the stream: the frames done so far are written (a live camera ends only this way).
@@ -59,7 +62,7 @@ int runProcess(const Args& args) {
     }
     consecutive_errors = 0;
     if (frame.status == capture::FrameStatus::skipped) {
-      ++skipped;
+      ++unreadable;
       std::cerr << "onetip process: frame " << frame.index << " skipped: " << frame.message << "\n";
       continue;
     }
@@ -68,7 +71,7 @@ int runProcess(const Args& args) {
     if (r.status == pipeline::FrameStatus::skipped || r.status == pipeline::FrameStatus::lost) {
       // Without a rest state nothing that follows can be measured: that is bad input.
       if (first) throw InputError(args.get("input") + ": frame " + std::to_string(frame.index) + ": " + r.message);
-      (r.status == pipeline::FrameStatus::lost ? lost : skipped) += 1;
+      (r.status == pipeline::FrameStatus::lost ? lost : unreadable) += 1;
       std::cerr << "onetip process: frame " << frame.index << " " << pipeline::toString(r.status) << ": " << r.message << "\n";
       continue;
     }
@@ -96,6 +99,7 @@ int runProcess(const Args& args) {
                   v.dx, v.dy, v.dz, v.yaw, v.pitch, v.roll, r.markers.validCount(), pattern.count());
     }
   }
+  const int delivered = processed + unreadable + lost;
   if (processed == 0) {
     if (interruptRequested()) {
       std::fprintf(stderr, "onetip process: interrupted before any frame was processed; nothing written\n");
@@ -103,20 +107,31 @@ int runProcess(const Args& args) {
     }
     throw InputError(args.get("input") + ": no usable frame");
   }
+  // A pose.csv holding a small part of the source's frames reads like a short recording, not a failed
+  // one: when more than half of the frames could not be read or used, the run fails and writes nothing.
+  if (!interruptRequested() && 2 * unreadable > delivered)
+    throw InputError(args.get("input") + ": " + std::to_string(unreadable) + " of " + std::to_string(delivered) +
+                     " frames could not be read or used (the lines above say why); more than half, so nothing is "
+                     "written");
   pose.commit();
   if (markers) markers->commit();
   if (timing) timing->commit();
   std::nth_element(process_ms.begin(), process_ms.begin() + static_cast<long>(process_ms.size() / 2), process_ms.end());
-  std::printf("%s %d frames (%d skipped, %d lost, %d source errors); median processing %.2f ms per frame\n",
-              interruptRequested() ? "interrupted: wrote the" : "processed", processed, skipped, lost, errors,
+  std::printf("%s %d of %d frames (%d unreadable, %d lost, %d source errors); median processing %.2f ms per frame\n",
+              interruptRequested() ? "interrupted: wrote" : "processed", processed, delivered, unreadable, lost, errors,
               process_ms[process_ms.size() / 2]);
+  if (unreadable > 0)
+    std::fprintf(stderr, "onetip process: %d of %d frames could not be read or used and are not in %s\n", unreadable,
+                 delivered, args.get("out").c_str());
   return interruptRequested() ? kInterruptedExit : 0;
 }
 
 const CommandRegistrar reg{{
     "process",
     "Run the sensing pipeline over a frame source and write the 6-D pose per frame (pose.csv), optionally the 3-D "
-    "markers (S, mm) and per-stage timings.",
+    "markers (S, mm) and per-stage timings. Frames are numbered by their 0-based index in the source. A frame that "
+    "cannot be read or used (damaged, the wrong size, blank) is skipped, named on stderr and counted in the summary; "
+    "when more than half of the frames are, the run fails (exit status 2) and writes nothing.",
     {{"calib", "calibration file (docs/reference.md); optional for sim: sources", false, false},
      {"pattern", "marker pattern file; optional for sim: sources", false, false},
      {"input", "frames: a folder of PNGs, a video file, v4l2:/dev/videoN or sim:SCENARIO.yaml", false, true},

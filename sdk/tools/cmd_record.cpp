@@ -24,6 +24,7 @@ namespace {
 
 int runRecord(const Args& args) {
   refuseOutputClashes(args, {"out"}, {"input", "calib", "pattern"});
+  refuseUnwritableOutputs(args, {}, {"out"});
   if (args.has("calib") != args.has("pattern"))
     throw InputError("give both --calib and --pattern, or neither (sim: sources have their own)");
   const int max_frames = args.getInt("frames", 0);

@@ -21,6 +21,7 @@ double msSince(Clock::time_point t0) {
 
 int runRender(const Args& args) {
   refuseOutputClashes(args, {"out", "timing"}, {"dataset", "queries"});
+  refuseUnwritableOutputs(args, {"out", "timing"}, {});
   const int k = args.getInt("neighbors", 1);
   if (k < 1) throw InputError("option '--neighbors': must be at least 1");
   const std::string out_path = args.get("out");

@@ -1,9 +1,12 @@
 // `onetip sim`: plays a simulator scenario and writes frames and ground truth.
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
+#include <memory>
 
 #include "command.hpp"
 #include "contact_sheet.hpp"
+#include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "interrupt.hpp"
 #include "output_paths.hpp"
@@ -16,6 +19,7 @@ struct Interrupted {};  // thrown from the per-frame callback to unwind the writ
 
 int runSim(const Args& args) {
   refuseOutputClashes(args, {"out", "contact-sheet"}, {"scenario"});
+  refuseUnwritableOutputs(args, {"contact-sheet"}, {"out"});
   sim::Scenario scenario = sim::loadScenario(args.get("scenario"));
   sim::SimulatorOptions options;
   options.frames = args.getInt("frames", 0);
@@ -26,8 +30,12 @@ int runSim(const Args& args) {
   const auto sheet_path = args.optional("contact-sheet");
   if (sheet_path && write.field_only) throw InputError("--contact-sheet needs rendered frames (drop --field-only)");
   ContactSheet sheet(simulator.frameCount());
+  // The sheet's staging file is made before the first frame and moved into
+  // place right after the folder: both outputs appear, or neither.
+  std::unique_ptr<AtomicFile> sheet_file;
+  if (sheet_path) sheet_file = std::make_unique<AtomicFile>(*sheet_path);
   const bool quiet = args.has("quiet");
-  write.on_frame = [&](const sim::GroundTruthFrame& f, int n) {
+  write.on_frame = [&](const sim::GroundTruthFrame& f, int) {
     if (interruptRequested()) throw Interrupted{};
     if (sheet_path && sheet.wants(f.index)) {
       char line[160];
@@ -38,10 +46,18 @@ int runSim(const Args& args) {
                                      line});
     }
     if (quiet) return;
-    std::printf("frame %4d/%d  contact %d  %-12s  dx %7.3f dy %7.3f dz %7.3f  yaw %7.2f pitch %7.2f roll %7.2f\n",
-                f.index + 1, n, f.in_contact ? 1 : 0, std::string(toString(f.in_contact ? f.state : ContactState::none)).c_str(),
+    std::printf("frame %4d  contact %d  %-12s  dx %7.3f dy %7.3f dz %7.3f  yaw %7.2f pitch %7.2f roll %7.2f\n", f.index,
+                f.in_contact ? 1 : 0, std::string(toString(f.in_contact ? f.state : ContactState::none)).c_str(),
                 f.input.dx, f.input.dy, f.input.dz, f.input.yaw, f.input.pitch, f.input.roll);
   };
+  write.before_commit = [&] {
+    if (!sheet_file) return;
+    const std::vector<unsigned char> png = sheet.png(*sheet_path);
+    std::ostream& out = sheet_file->stream();
+    out.write(reinterpret_cast<const char*>(png.data()), static_cast<std::streamsize>(png.size()));
+    if (!out.flush()) throw InputError(*sheet_path + ": write failed");
+  };
+  if (!quiet) std::printf("%d frames, numbered 0 to %d\n", simulator.frameCount(), simulator.frameCount() - 1);
   {
     const InterruptHandlers handlers;  // SIGINT/SIGTERM: nothing is written, the staging folder is removed
     try {
@@ -51,8 +67,17 @@ int runSim(const Args& args) {
       return kInterruptedExit;
     }
   }
-  if (sheet_path) sheet.save(*sheet_path);
-  std::cout << "wrote " << simulator.frameCount() << " frames to " << args.get("out") << "\n";
+  if (sheet_file) {
+    try {
+      sheet_file->commit();
+    } catch (const InputError&) {  // the folder was made by this run: take it back rather than leave half the output
+      std::error_code ec;
+      std::filesystem::remove_all(args.get("out"), ec);
+      throw;
+    }
+  }
+  std::cout << "wrote " << simulator.frameCount() << " frames to " << args.get("out")
+            << (sheet_path ? " and the contact sheet " + *sheet_path : std::string()) << "\n";
   return 0;
 }
 

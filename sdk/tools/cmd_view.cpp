@@ -2,6 +2,7 @@
 // headless with --screenshot (the last frame drawn) and/or --record; --windowed
 // keeps the window with them, --pose-out logs the 6-D input per frame.
 #include <cstdio>
+#include <filesystem>
 #include <string>
 
 #include "command.hpp"
@@ -23,6 +24,14 @@ cv::Size parseSize(const std::string& text) {
 
 int runView(const Args& args) {
   refuseOutputClashes(args, {"screenshot", "record", "pose-out"}, {"input", "calib", "pattern"});
+  refuseUnwritableOutputs(args, {"screenshot", "pose-out"}, {});
+  if (const auto record = args.optional("record")) {  // a video file, or a folder for a PNG sequence
+    const std::string ext = std::filesystem::path(*record).extension().string();
+    if (ext == ".mp4" || ext == ".avi")
+      requireWritableFile("--record", *record);
+    else
+      requireCreatableFolder("--record", *record);
+  }
   viewer::ViewerOptions o;
   o.input = args.get("input");
   o.calib = args.optional("calib").value_or("");
@@ -42,6 +51,9 @@ int runView(const Args& args) {
               r.drawn, r.headless ? "headless" : "in a window", r.gl.c_str(), r.loop_fps, r.median_source_ms,
               r.median_process_ms, r.median_draw_ms, r.median_readback_ms, r.median_present_ms);
   if (!o.screenshot.empty()) std::printf("screenshot: %s\n", o.screenshot.c_str());
+  if (r.skipped > 0)
+    std::fprintf(stderr, "onetip view: %d frames could not be read or used and were not shown (last: %s)\n", r.skipped,
+                 r.last_skipped.c_str());
   return interruptRequested() ? kInterruptedExit : 0;
 }
 
@@ -55,7 +67,8 @@ const CommandRegistrar reg{{
      {"pattern", "marker pattern file (default for sim: inputs: the simulator's)", false, false},
      {"screenshot", "PNG of the last frame drawn; runs headless unless --windowed", false, false},
      {"frames", "stop after this many frames (default: when the input ends)", false, false},
-     {"record", "record what is shown: OUT.mp4 / OUT.avi, or a folder for a PNG sequence", false, false},
+     {"record", "record what is shown: OUT.mp4 / OUT.avi, or a folder to create (absent or empty) for a PNG sequence",
+      false, false},
      {"size", "window size WIDTHxHEIGHT (default 1280x720)", false, false},
      {"pose-out", "CSV of the 6-D input per drawn frame: frame,contact,state,dx,dy,dz,yaw,pitch,roll, then for sim "
                   "inputs the ground truth gt_contact,gt_dx..gt_roll, for sim:virtual the finger's pose finger_x..finger_roll",

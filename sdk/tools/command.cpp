@@ -13,11 +13,17 @@ Args::Args(const std::vector<OptionSpec>& specs, const std::vector<std::string>&
   for (size_t i = 0; i < argv.size(); ++i) {
     const std::string& a = argv[i];
     if (a.rfind("--", 0) != 0) throw InputError("unexpected argument '" + a + "'");
-    const std::string name = a.substr(2);
+    // "--key=value" is "--key value"; only the first '=' splits, so a value may hold more.
+    const size_t eq = a.find('=');
+    const std::string name = a.substr(2, eq == std::string::npos ? std::string::npos : eq - 2);
     auto it = by_name.find(name);
     if (it == by_name.end()) throw InputError("unknown option '--" + name + "'");
     if (it->second->is_flag) {
+      if (eq != std::string::npos)
+        throw InputError("option '--" + name + "' is a switch and takes no value ('" + a + "')");
       values_[name] = "1";
+    } else if (eq != std::string::npos) {
+      values_[name] = a.substr(eq + 1);
     } else {
       if (i + 1 >= argv.size()) throw InputError("option '--" + name + "' needs a value");
       values_[name] = argv[++i];
@@ -75,7 +81,7 @@ std::string usageOf(const Command& c) {
   for (const auto& o : c.options)
     out << (o.required ? " " : " [") << "--" << o.name << (o.is_flag ? "" : " VALUE")
         << (o.required ? "" : "]");
-  out << "\n\n" << c.summary << "\n\noptions:\n";
+  out << "\n\n" << c.summary << "\n\noptions (--name VALUE or --name=VALUE):\n";
   for (const auto& o : c.options) out << "  --" << o.name << "\n      " << o.help << "\n";
   return out.str();
 }

@@ -1,9 +1,10 @@
 // tools/command.hpp — the `onetip` program's subcommands and their arguments.
 //
 // Each subcommand lives in its own cmd_<name>.cpp and registers itself with a
-// static CommandRegistrar. Arguments are "--key value" options and "--flag"
-// switches; unknown options, missing values and missing required options are
-// InputErrors with a one-line message naming the option.
+// static CommandRegistrar. Arguments are "--key value" (or "--key=value")
+// options and "--flag" switches; unknown options, missing values, a value
+// given to a switch and missing required options are InputErrors with a
+// one-line message naming the option.
 #pragma once
 
 #include <functional>

@@ -39,6 +39,13 @@ void ContactSheet::add(const cv::Mat& frame, const std::vector<std::string>& cap
 }
 
 void ContactSheet::save(const std::string& path) const {
+  const std::vector<uchar> png = this->png(path);
+  AtomicFile file(path);
+  file.stream().write(reinterpret_cast<const char*>(png.data()), static_cast<std::streamsize>(png.size()));
+  file.commit();
+}
+
+std::vector<unsigned char> ContactSheet::png(const std::string& path) const {
   if (images_.empty()) throw InputError(path + ": no frames for the contact sheet");
   const int rows = (static_cast<int>(images_.size()) + columns_ - 1) / columns_;
   const int th = images_.front().rows;
@@ -49,9 +56,7 @@ void ContactSheet::save(const std::string& path) const {
   }
   std::vector<uchar> png;
   if (!cv::imencode(".png", sheet, png)) throw InputError(path + ": cannot encode the contact sheet");
-  AtomicFile file(path);
-  file.stream().write(reinterpret_cast<const char*>(png.data()), static_cast<std::streamsize>(png.size()));
-  file.commit();
+  return png;
 }
 
 }  // namespace onetip::tools

@@ -17,6 +17,8 @@ class ContactSheet {
   void add(const cv::Mat& frame, const std::vector<std::string>& caption);
   // Writes the grid atomically; throws InputError when it cannot.
   void save(const std::string& path) const;
+  // The grid as PNG bytes; throws InputError when there is no frame or it cannot be encoded.
+  std::vector<unsigned char> png(const std::string& path_for_messages) const;
 
  private:
   int frame_count_, tiles_, columns_, tile_width_;

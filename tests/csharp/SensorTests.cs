@@ -2,7 +2,7 @@
 // press end to end, compared frame by frame with `onetip process` (the C++
 // pipeline) on the same scenario, bad input at the boundary, and the option
 // table (OptionsTests.cs).
-// Usage: mono OnetipTests.exe SCENARIO.yaml POSE.csv MARKERS.csv WORK_DIR, or OnetipTests.exe options,
+// Usage: mono OnetipTests.exe SCENARIO.yaml POSE.csv MARKERS.csv WORK_DIR BEYOND_RANGE.yaml, or OnetipTests.exe options,
 // or OnetipTests.exe uncertainty-in-contact SCENARIO.yaml (UncertaintyTests.cs)
 using System;
 using System.Collections.Generic;
@@ -24,20 +24,21 @@ namespace Onetip.Tests
                 Console.WriteLine(Check.Failures == 0 ? "all option checks passed" : Check.Failures + " checks failed");
                 return Check.Failures == 0 ? 0 : 1;
             }
-            if (args.Length == 2 && args[0] == "uncertainty-in-contact") {  // needs the estimator's uncertainty
+            if (args.Length == 2 && args[0] == "uncertainty-in-contact") {
                 UncertaintyTests.InContact(args[1]);
                 Console.WriteLine(Check.Failures == 0 ? "all uncertainty checks passed" : Check.Failures + " checks failed");
                 return Check.Failures == 0 ? 0 : 1;
             }
-            if (args.Length != 4) {
-                Console.Error.WriteLine("usage: OnetipTests.exe SCENARIO.yaml POSE.csv MARKERS.csv WORK_DIR | options | " +
-                                        "uncertainty-in-contact SCENARIO.yaml");
+            if (args.Length != 5) {
+                Console.Error.WriteLine("usage: OnetipTests.exe SCENARIO.yaml POSE.csv MARKERS.csv WORK_DIR BEYOND_RANGE.yaml | " +
+                                        "options | uncertainty-in-contact SCENARIO.yaml");
                 return 2;
             }
             Console.WriteLine("onetip " + Sensor.LibraryVersion + ", C ABI " + Sensor.LibraryAbiVersion);
             Check.That(Sensor.LibraryAbiVersion == Sensor.WrapperAbiVersion, "the library's ABI version is the wrapper's");
             var reference = new CliReference(args[1], args[2]);
             EndToEnd(args[0], reference);
+            BeyondTheWorkingRange(args[4]);
             BadInput(args[3]);
             CallbacksThatThrow(args[3]);
             UnityAxesTests.Run();
@@ -83,15 +84,9 @@ namespace Onetip.Tests
             Check.That(begins.Count == 1 && begins[0].Frame == contact[0], "one contact begin, at the reference's first contact frame");
             Check.That(ends.Count == 1 && ends[0].Frame == contact[contact.Length - 1] + 1,
                        "one contact end, at the frame after the reference's last contact frame");
-            // The press goes 3.5 mm deep, past the 3 mm working range: that, and only that, is reported.
+            // The shipped press stays inside the working range (dz in [0, 3] mm): no error event.
             var errors = polled.Where(e => e.Type == EventType.Error).ToList();
-            Check.That(errors.Count > 0, "the press past the working range is reported");
-            foreach (var e in errors)
-                Check.That(e.Message.Contains("working range") && reference.Pose[e.Frame][2] > options.WorkingRange[2],
-                           "an error event only where the reference's dz leaves the working range: frame " + e.Frame +
-                           ": " + e.Message);
-            foreach (var e in errors)
-                Check.That(e.ToString() == "Error frame " + e.Frame + ": " + e.Message, "ToString() shows the message: " + e);
+            Check.That(errors.Count == 0, "the shipped press gives no error event: " + string.Join("; ", errors));
             Check.That(inputs.Select(e => e.Frame).SequenceEqual(contact), "an input event for every contact frame of the reference");
             foreach (var e in inputs)
                 CompareInput(e.Input, reference.Pose[e.Frame], "input event of frame " + e.Frame);
@@ -113,6 +108,38 @@ namespace Onetip.Tests
             }
             Check.That(stats.FramesProcessed == reference.Pose.Count && stats.FramesDropped == 0, "every frame processed, none dropped");
             UncertaintyTests.AgainstTheReference(reference, polled, fromCallback, processed);
+        }
+
+        // A press to 5 mm (tests/data/scenarios/press_beyond_range.yaml): an error event "beyond the working
+        // range" at each frame where the measured input leaves the range, and nowhere else.
+        static void BeyondTheWorkingRange(string scenario)
+        {
+            var options = SensorOptions.Default();
+            options.Lossless = true;
+            options.EventQueueCapacity = 100000;
+            options.FrameQueueCapacity = 1000;
+            var events = new List<SensorEvent>();
+            var frames = new SortedDictionary<long, FrameResult>();
+            using (var sensor = new Sensor("sim:" + scenario, null, null, null, options)) {
+                sensor.Start();
+                SensorEvent ev;
+                while (sensor.WaitEvent(5.0, out ev)) events.Add(ev);
+                Check.That(sensor.WaitFinished(60.0), "the simulated sensor finishes");
+                FrameResult frame;
+                while (sensor.PollFrame(out frame)) frames[frame.Frame] = frame;
+            }
+            var leaves = frames.Values.Where(f => f.OutOfRange && !(frames.ContainsKey(f.Frame - 1) && frames[f.Frame - 1].OutOfRange))
+                                      .Select(f => f.Frame).ToList();
+            var errors = events.Where(e => e.Type == EventType.Error).ToList();
+            var reported = errors.Where(e => e.Message.Contains("working range")).Select(e => e.Frame).ToList();
+            Check.That(leaves.Count > 0, "the press leaves the working range");
+            Check.That(reported.SequenceEqual(leaves), "an error event where the input leaves the working range, and only there: " +
+                       string.Join(",", reported) + " vs " + string.Join(",", leaves));
+            foreach (var f in leaves)
+                Check.That(frames[f].Raw.Dz > options.WorkingRange[2], "it is the press depth that leaves, frame " + f);
+            foreach (var e in errors)
+                Check.That(e.ToString() == "Error frame " + e.Frame + ": " + e.Message, "ToString() shows the message: " + e);
+            Console.WriteLine("beyond the working range: reported at frame(s) {0}", string.Join(",", reported));
         }
 
         static void CompareInput(Input6 got, double[] expected, string what)

@@ -69,6 +69,23 @@ inline CliRun runCli(const std::string& args, const std::string& err_file,
   return r;
 }
 
+// Runs `onetip::test::cliPath() args` to the end, its stdout to out_file and stderr to err_file.
+inline CliRun runCliWithOutput(const std::string& args, const std::string& out_file, const std::string& err_file) {
+  CliRun r;
+  const std::string cmd =
+      std::string("exec ") + onetip::test::cliPath() + " " + args + " >" + out_file + " 2>" + err_file;
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    ::execl("/bin/sh", "sh", "-c", cmd.c_str(), static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  r.exit_code = exitCodeOf(status);
+  r.err = readText(err_file);
+  return r;
+}
+
 // True when some entry of `dir` has a name containing `part`.
 inline bool anyEntryContains(const std::filesystem::path& dir, const std::string& part) {
   std::error_code ec;

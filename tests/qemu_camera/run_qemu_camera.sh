@@ -14,7 +14,7 @@
 #           and prints their folder-source digest; v4l2loopback devices=1
 #           video_nr=0 max_buffers=4 carries them as MJPEG.
 # record:   the same frames, every 4th of 4 x FRAMES (default 16) so that the
-#           press reaches 3 mm, and the whole onetip tool in the guest (its 271
+#           press reaches its 2.5 mm peak, and the whole onetip tool in the guest (its 271
 #           libraries: a 134 MB initramfs, 2 GB of guest memory): guest_record.sh
 #           runs `onetip process` live, then `onetip record`, on the same feed;
 #           a virtio disk brings the outputs back; the host processes the session.

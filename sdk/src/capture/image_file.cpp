@@ -1,10 +1,15 @@
 #include "capture/image_file.hpp"
 
+#include <png.h>
+
 #include <algorithm>
+#include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <opencv2/imgcodecs.hpp>
 #include <vector>
 
+#include "core/atomic_file.hpp"
 #include "core/error.hpp"
 
 namespace onetip::capture {
@@ -118,6 +123,103 @@ std::optional<Declared> declaredImage(const std::uint8_t* data, std::size_t byte
   return std::nullopt;
 }
 
+// PNG files are decoded here with libpng rather than by cv::imdecode: OpenCV's
+// PNG reader leaves libpng's default error and warning handlers in place, so
+// through it a damaged file prints a raw "libpng error: ..." (or "libpng
+// warning: ...") line to stderr beside our own message. Here errors become the one-line
+// reason and warnings are dropped (the image decodes anyway). The
+// transformations are OpenCV's for IMREAD_GRAYSCALE (imgcodecs grfmt_png.cpp),
+// so the pixels are the same: 16-bit samples keep their high byte, alpha is
+// stripped, a palette and 1/2/4-bit grey expand to 8 bits, and colour becomes
+// grey with png_set_rgb_to_gray(0.299, 0.587), i.e. Y = 0.299 R + 0.587 G + 0.114 B.
+// libpng reports errors by longjmp, so the two functions that call it with
+// setjmp hold only plain data.
+struct PngInput {
+  const std::uint8_t* data;
+  std::size_t size;
+  std::size_t at;
+  char message[200];
+};
+
+void pngError(png_structp png, png_const_charp message) {
+  auto* in = static_cast<PngInput*>(png_get_error_ptr(png));
+  std::snprintf(in->message, sizeof in->message, "%s", message ? message : "unknown libpng error");
+  png_longjmp(png, 1);
+}
+
+void pngWarning(png_structp, png_const_charp) {}
+
+void pngRead(png_structp png, png_bytep out, png_size_t n) {
+  auto* in = static_cast<PngInput*>(png_get_io_ptr(png));
+  if (n > in->size - in->at) png_error(png, "the file ends early (truncated)");
+  std::memcpy(out, in->data + in->at, n);
+  in->at += n;
+}
+
+// Reads the header and sets OpenCV's grey transformations; false after a libpng error.
+bool pngStart(png_structp png, png_infop info, png_uint_32* width, png_uint_32* height) {
+  if (setjmp(png_jmpbuf(png))) return false;
+  png_read_info(png, info);
+  int depth = 0, colour = 0;
+  png_get_IHDR(png, info, width, height, &depth, &colour, nullptr, nullptr, nullptr);
+  if (depth == 16) png_set_strip_16(png);
+  png_set_strip_alpha(png);
+  if (colour == PNG_COLOR_TYPE_PALETTE) png_set_palette_to_rgb(png);
+  if ((colour & PNG_COLOR_MASK_COLOR) == 0 && depth < 8) png_set_expand_gray_1_2_4_to_8(png);
+  png_set_rgb_to_gray(png, 1, 0.299, 0.587);
+  png_set_interlace_handling(png);
+  png_read_update_info(png, info);
+  return true;
+}
+
+// Decodes every row (and reads to IEND, checking each chunk's CRC); false after a libpng error.
+bool pngRows(png_structp png, png_bytepp rows) {
+  if (setjmp(png_jmpbuf(png))) return false;
+  png_read_image(png, rows);
+  png_read_end(png, nullptr);
+  return true;
+}
+
+struct PngReader {
+  png_structp png = nullptr;
+  png_infop info = nullptr;
+  ~PngReader() { png_destroy_read_struct(&png, info ? &info : nullptr, nullptr); }
+};
+
+// A PNG (whose header declared `declared`) to 8-bit grey, or the reason it cannot be.
+GreyImage decodePngGrey(const std::uint8_t* data, std::size_t bytes, cv::Size declared) {
+  GreyImage out;
+  PngInput in{data, bytes, 0, {}};
+  PngReader reader;
+  reader.png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &in, pngError, pngWarning);
+  if (reader.png) reader.info = png_create_info_struct(reader.png);
+  if (!reader.png || !reader.info) {
+    out.problem = "cannot decode the PNG: libpng could not start";
+    return out;
+  }
+  png_set_read_fn(reader.png, &in, pngRead);
+  png_uint_32 width = 0, height = 0;
+  if (pngStart(reader.png, reader.info, &width, &height)) {
+    if (cv::Size(static_cast<int>(width), static_cast<int>(height)) != declared ||
+        png_get_channels(reader.png, reader.info) != 1 || png_get_bit_depth(reader.png, reader.info) != 8 ||
+        png_get_rowbytes(reader.png, reader.info) != width) {
+      out.problem = "cannot decode the PNG: unexpected layout after conversion to 8-bit grey";
+      return out;
+    }
+    cv::Mat grey(declared, CV_8UC1);
+    std::vector<png_bytep> rows(static_cast<std::size_t>(grey.rows));
+    for (int y = 0; y < grey.rows; ++y) rows[static_cast<std::size_t>(y)] = grey.ptr<png_byte>(y);
+    if (pngRows(reader.png, rows.data())) {
+      out.grey = grey;
+      return out;
+    }
+  }
+  out.problem = std::string("cannot decode the PNG: ") + in.message;
+  return out;
+}
+
+bool isPng(const std::uint8_t* data, std::size_t bytes) { return bytes >= 8 && png_sig_cmp(data, 0, 8) == 0; }
+
 }  // namespace
 
 std::optional<cv::Size> declaredImageSize(const std::uint8_t* data, std::size_t bytes) {
@@ -144,6 +246,8 @@ std::optional<std::string> imageHeaderProblem(const std::uint8_t* data, std::siz
 
 std::optional<std::string> readFileBytes(const std::string& path, std::size_t max_bytes,
                                          std::vector<std::uint8_t>& bytes) {
+  const std::string problem = inputFileProblem(path);  // a folder opens, and says it holds 2^63 - 1 bytes
+  if (!problem.empty()) return problem;
   std::ifstream in(path, std::ios::binary | std::ios::ate);
   const std::streamoff size = in ? static_cast<std::streamoff>(in.tellg()) : -1;
   if (size < 0) return "cannot read the file";
@@ -161,6 +265,7 @@ GreyImage decodeGreyImage(const std::uint8_t* data, std::size_t bytes, const Ima
   cv::Size declared;
   out.problem = imageHeaderProblem(data, bytes, limits, declared);
   if (out.problem) return out;
+  if (isPng(data, bytes)) return decodePngGrey(data, bytes, declared);
   try {
     const cv::Mat buffer(1, static_cast<int>(bytes), CV_8UC1, const_cast<std::uint8_t*>(data));
     out.grey = cv::imdecode(buffer, cv::IMREAD_GRAYSCALE);

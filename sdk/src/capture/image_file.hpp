@@ -6,8 +6,11 @@
 // width and height are read from the header first (PNG IHDR, JPEG SOFn,
 // BMP info header, TIFF first IFD) and compared with what the caller expects:
 // the stream's frame size when known, otherwise a bound on the pixel count.
-// Only then is the image decoded (cv::imdecode, grey), inside a try block:
-// every failure is a one-line reason, never an exception or a large allocation.
+// Only then is the image decoded to grey: PNG with libpng, its error and
+// warning messages caught (OpenCV's PNG reader let libpng print them to
+// stderr), other formats with cv::imdecode inside a try block. Every failure
+// is a one-line reason, never an exception, a stray line on stderr or a large
+// allocation.
 #pragma once
 
 #include <cstddef>

@@ -48,6 +48,21 @@ void requireRegularFileTarget(const std::string& path) {
                             "replace it");
 }
 
+std::string inputFileProblem(const std::string& path) {
+  struct stat st {};
+  if (::stat(path.c_str(), &st) != 0)
+    return errno == ENOENT || errno == ENOTDIR ? "no such file"
+                                               : std::string("cannot read (") + std::strerror(errno) + ")";
+  if (S_ISDIR(st.st_mode)) return "is a directory, not a file";
+  if (!S_ISREG(st.st_mode)) return "is not a regular file (a device, socket or FIFO)";
+  return "";
+}
+
+void requireInputFile(const std::string& path) {
+  const std::string problem = inputFileProblem(path);
+  if (!problem.empty()) throw InputError(path + ": " + problem);
+}
+
 void removeStaleStaging(const std::string& target) {
   const fs::path t(target);
   const fs::path folder = t.has_parent_path() ? t.parent_path() : fs::path(".");

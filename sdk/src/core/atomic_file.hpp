@@ -66,6 +66,13 @@ class AtomicDir {
 
 // Throws InputError unless `path` is absent or (after symlinks) a regular file.
 void requireRegularFileTarget(const std::string& path);
+// Why `path` cannot be read as a file, or "" when it is a regular file (after
+// symlinks): "no such file", "is a directory, not a file", or "is not a
+// regular file (a device, socket or FIFO)". A folder opens as an ifstream and
+// reports a size of 2^63 - 1 bytes; callers check here first and say so.
+std::string inputFileProblem(const std::string& path);
+// Throws InputError "<path>: <inputFileProblem>" unless `path` is a readable regular file.
+void requireInputFile(const std::string& path);
 // Removes "<target>.tmp.<pid>" and "<target>.tmp.<pid>.*" entries beside `target`
 // (files, or folders such as the simulator's staging folder) whose process is gone.
 void removeStaleStaging(const std::string& target);

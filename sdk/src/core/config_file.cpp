@@ -14,6 +14,7 @@
 #include <string_view>
 #include <utility>
 
+#include "core/atomic_file.hpp"
 #include "core/error.hpp"
 
 namespace onetip {
@@ -34,8 +35,8 @@ constexpr std::size_t kMaxConfigValues = 1000000;  // aliases can repeat a subtr
 }
 
 std::string readBounded(const std::string& path) {
+  requireInputFile(path);
   std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) throw InputError(path + ": no such file");
   const auto bytes = std::filesystem::file_size(path, ec);
   if (ec) throw InputError(path + ": cannot read (" + ec.message() + ")");
   if (bytes > kMaxConfigBytes)

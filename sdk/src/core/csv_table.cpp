@@ -61,6 +61,7 @@ std::vector<std::string> splitLine(const std::string& line) {
 }  // namespace
 
 CsvTable readCsv(const std::string& path) {
+  requireInputFile(path);
   std::ifstream in(path);
   if (!in) throw InputError(path + ": cannot open");
   CsvTable t;

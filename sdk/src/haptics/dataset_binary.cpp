@@ -52,6 +52,7 @@ bool isBinaryDataset(const std::string& path) {
 }
 
 TactileDataset readDatasetBinary(const std::string& path) {
+  requireInputFile(path);  // a folder would open and report 2^63 - 1 bytes
   std::ifstream in(path, std::ios::binary | std::ios::ate);
   if (!in) throw InputError(path + ": cannot open");
   const auto length = static_cast<size_t>(in.tellg());

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "core/atomic_file.hpp"
 #include "core/csv_table.hpp"
 #include "core/error.hpp"
 #include "haptics/dataset_binary.hpp"
@@ -103,6 +104,7 @@ void writeDatasetCsv(const TactileDataset& dataset, const std::string& path) {
 }
 
 TactileDataset loadDataset(const std::string& path) {
+  requireInputFile(path);
   return isBinaryDataset(path) ? readDatasetBinary(path) : readDatasetCsv(path);
 }
 

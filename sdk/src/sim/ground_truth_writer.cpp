@@ -51,6 +51,7 @@ void writeSimulation(Simulator& sim, const std::string& out_dir, const WriteOpti
   }
   pose.commit();
   markers.commit();
+  if (options.before_commit) options.before_commit();
   staging.commit();
 }
 

@@ -22,6 +22,9 @@ struct WriteOptions {
   bool field_only = false;
   // Called after each frame with (frame index, frame count); may print progress.
   std::function<void(const GroundTruthFrame&, int)> on_frame;
+  // Called after the last frame, before the folder is moved into place: an
+  // exception from it (e.g. a companion output that cannot be made) leaves no folder.
+  std::function<void()> before_commit;
 };
 
 // Plays the simulator to the end and writes the run; throws InputError.

@@ -158,6 +158,10 @@ ViewerReport runViewer(const ViewerOptions& o, const FrameObserver& observer) {
     const double t_source = msSince(t_frame);
     if (frame.status == capture::FrameStatus::end) break;
     if (frame.status != capture::FrameStatus::ok) {
+      if (frame.status == capture::FrameStatus::skipped) {
+        ++report.skipped;
+        report.last_skipped = "frame " + std::to_string(frame.index) + " skipped: " + frame.message;
+      }
       if (++consecutive_errors >= 50) throw InputError(o.input + ": the source keeps failing: " + frame.message);
       continue;
     }

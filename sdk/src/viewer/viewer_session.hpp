@@ -51,6 +51,8 @@ struct ViewerReport {
   double median_draw_ms = 0;     // scene building + GL drawing, finished (glFinish)
   double median_readback_ms = 0; // reading the image back (0 when not needed)
   double median_present_ms = 0;  // showing the window's frame and taking its events (0 headless)
+  int skipped = 0;               // frames the source could not deliver (unreadable, wrong size, blank)
+  std::string last_skipped;      // the source's message for the last of them ("frame N: why")
 };
 
 // Sees every drawn frame as the window shows it (BGR, top-down) with what it showed.

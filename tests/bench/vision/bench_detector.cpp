@@ -1,5 +1,5 @@
-// Vision front end speed on 1920x1080 simulated frames (the simulator's
-// press scenario, 17x17 markers, sigma 2 noise), one core:
+// Vision front end speed on 1920x1080 simulated frames (a press to 3.5 mm,
+// tests/data/scenarios/deep_press.yaml, 17x17 markers, sigma 2 noise), one core:
 //   ours: detect on a 960x1080 view; track (local search) on a view; a whole
 //   frame = split + track both views (local search), and split + full
 //   detection + track both views;
@@ -37,7 +37,8 @@ struct Frames {
 const Frames& pressFrames() {
   static const Frames frames = [] {
     Frames f;
-    sim::Simulator simulator(sim::loadScenario(std::string(ONETIP_SOURCE_DIR) + "/samples/scenarios/press.yaml"));
+    sim::Simulator simulator(
+        sim::loadScenario(std::string(ONETIP_SOURCE_DIR) + "/tests/data/scenarios/deep_press.yaml"));
     f.calib = simulator.calibration();
     f.pattern = simulator.pattern();
     for (int k = 0; !simulator.done(); ++k) {

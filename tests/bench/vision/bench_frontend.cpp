@@ -1,5 +1,5 @@
 // The whole vision front end per frame (split, detect, track, triangulate) on
-// 1920x1080 simulated frames of the press scenario at the default noise, one
+// 1920x1080 simulated frames of a press to 3.5 mm (tests/data/scenarios/deep_press.yaml) at the default noise, one
 // core; the same from MJPEG bytes (TurboJPEG decode straight to grey first);
 // and, in the same run, what a user would pick instead: OpenCV's
 // findChessboardCornersSB or findChessboardCorners + cornerSubPix on both views.
@@ -31,7 +31,7 @@ const Recording& recording() {
     Recording r;
     sim::SimulatorOptions o;
     o.frames = 48;
-    sim::Simulator s(sim::loadScenario(std::string(ONETIP_SOURCE_DIR) + "/samples/scenarios/press.yaml"), o);
+    sim::Simulator s(sim::loadScenario(std::string(ONETIP_SOURCE_DIR) + "/tests/data/scenarios/deep_press.yaml"), o);
     r.calib = s.calibration();
     r.pattern = s.pattern();
     while (!s.done()) {

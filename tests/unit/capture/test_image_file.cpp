@@ -60,6 +60,77 @@ TEST(ImageFile, DecodesGreyExactlyAfterTheCheck) {
   EXPECT_TRUE(wrong.grey.empty());
 }
 
+// PNG is decoded with libpng (its messages caught), with OpenCV's grey transformations: every layout gives the
+// pixels cv::imdecode(IMREAD_GRAYSCALE) gives. OpenCV encodes the common layouts here; tests/data/png holds the
+// ones it cannot write (palette with transparency, 2-bit grey and 16-bit RGB interlaced, grey with alpha).
+TEST(ImageFile, PngDecodesToTheGreyOpenCvGives) {
+  std::vector<std::pair<std::string, std::vector<std::uint8_t>>> cases;
+  cv::Mat colour(23, 37, CV_8UC3), alpha(23, 37, CV_8UC4), deep(23, 37, CV_16UC1), deep_colour(23, 37, CV_16UC3);
+  cv::randu(colour, 0, 256);
+  cv::randu(alpha, 0, 256);
+  cv::randu(deep, 0, 65536);
+  cv::randu(deep_colour, 0, 65536);
+  for (const auto& [name, image] : std::vector<std::pair<std::string, cv::Mat>>{
+           {"grey 8-bit", texture({37, 23})}, {"BGR 8-bit", colour}, {"BGRA 8-bit", alpha},
+           {"grey 16-bit", deep}, {"BGR 16-bit", deep_colour}}) {
+    std::vector<std::uint8_t> png;
+    ASSERT_TRUE(cv::imencode(".png", image, png)) << name;
+    cases.emplace_back(name, png);
+  }
+  std::vector<std::uint8_t> bilevel;
+  ASSERT_TRUE(cv::imencode(".png", texture({37, 23}) > 128, bilevel, {cv::IMWRITE_PNG_BILEVEL, 1}));
+  cases.emplace_back("1-bit grey", bilevel);
+  const fs::path data = fs::path(onetip::test::sourceDir()) / "tests/data/png";
+  for (const char* file : {"palette_trns.png", "grey2_interlaced.png", "rgb16_interlaced.png", "grey_alpha8.png"}) {
+    std::vector<std::uint8_t> bytes;
+    ASSERT_FALSE(readFileBytes((data / file).string(), 1 << 20, bytes)) << file;
+    cases.emplace_back(file, bytes);
+  }
+  for (const auto& [name, bytes] : cases) {
+    const cv::Mat expected = cv::imdecode(bytes, cv::IMREAD_GRAYSCALE);
+    ASSERT_EQ(expected.size(), cv::Size(37, 23)) << name;
+    const GreyImage image = decodeGreyImage(bytes.data(), bytes.size(), ImageLimits{});
+    ASSERT_FALSE(image.problem) << name << ": " << *image.problem;
+    EXPECT_EQ(image.grey.type(), CV_8UC1) << name;
+    EXPECT_EQ(cv::norm(image.grey, expected, cv::NORM_INF), 0.0) << name;
+  }
+}
+
+// A damaged PNG is a reason of ours and nothing on stderr (libpng's default handlers print "libpng error: ...").
+TEST(ImageFile, ADamagedPngIsOneReasonAndNothingOnStderr) {
+  std::vector<std::uint8_t> png;
+  ASSERT_TRUE(cv::imencode(".png", texture({64, 48}), png));
+  std::vector<std::uint8_t> truncated(png.begin(), png.begin() + static_cast<long>(png.size() / 2));
+  std::vector<std::uint8_t> bad_crc = png;
+  const std::string text(bad_crc.begin(), bad_crc.end());
+  const size_t idat = text.find("IDAT");
+  ASSERT_NE(idat, std::string::npos);
+  bad_crc[idat + 20] ^= 0x55;
+  // libpng names the damaged chunk: the CRC, or zlib's own check when the changed byte breaks the stream first
+  for (const auto& [bytes, reason] : std::vector<std::pair<std::vector<std::uint8_t>, std::string>>{
+           {truncated, "cannot decode the PNG: the file ends early (truncated)"},
+           {bad_crc, "cannot decode the PNG: IDAT: "}}) {
+    ::testing::internal::CaptureStderr();
+    const GreyImage image = decodeGreyImage(bytes.data(), bytes.size(), ImageLimits{});
+    const std::string err = ::testing::internal::GetCapturedStderr();
+    EXPECT_EQ(err, "");
+    ASSERT_TRUE(image.problem);
+    EXPECT_EQ(image.problem->rfind(reason, 0), 0u) << *image.problem;
+    EXPECT_EQ(image.problem->find('\n'), std::string::npos);
+    EXPECT_TRUE(image.grey.empty());
+  }
+}
+
+// A folder where an image belongs is named as one (opened as a file, it reports 2^63 - 1 bytes).
+TEST(ImageFile, AFolderIsNamedAsADirectory) {
+  const test_support::ScratchDir dir("onetip-image-file");
+  const GreyImage image = readGreyImage(dir.path().string(), ImageLimits{});
+  ASSERT_TRUE(image.problem);
+  EXPECT_EQ(*image.problem, "is a directory, not a file");
+  EXPECT_NE(test_support::inputErrorOf([&] { loadGreyImage(dir.path().string(), {}); }).find(": is a directory"),
+            std::string::npos);
+}
+
 TEST(ImageFile, HostileHeadersAreReasonsNotExceptions) {
   const ImageLimits limits;
   for (const auto& [file, expected] : std::vector<std::pair<std::string, std::string>>{

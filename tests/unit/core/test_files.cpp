@@ -64,6 +64,9 @@ TEST(Files, BadCalibrationNamesTheKey) {
   const auto dir = scratch.path();
   EXPECT_NE(inputErrorOf([&] { loadCalibration((dir / "missing.yaml").string()); }).find("no such file"),
             std::string::npos);
+  // a folder where the file belongs is named as a directory, not as missing
+  EXPECT_EQ(inputErrorOf([&] { loadCalibration(dir.string()); }), dir.string() + ": is a directory, not a file");
+  EXPECT_EQ(inputErrorOf([&] { readCsv(dir.string()); }), dir.string() + ": is a directory, not a file");
   writeText(dir / "nok.yaml", "%YAML:1.0\n---\nimage_width: 100\nimage_height: 50\nsplit_x: 50\n");
   EXPECT_NE(inputErrorOf([&] { loadCalibration((dir / "nok.yaml").string()); }).find("flip_left"),
             std::string::npos);

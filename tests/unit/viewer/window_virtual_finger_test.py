@@ -15,7 +15,7 @@ the phase that commanded them and agree with the ground truth; the window's
 screenshot shows the camera frame and a pressed deformation field.
 
 Exit 77 (ctest SKIP_RETURN_CODE) when Xvfb or xdotool is not installed
-(.ci/install-deps.sh installs both). Every wait has a timeout.
+(.ci/install-deps.sh --tests installs both). Every wait has a timeout.
 """
 import argparse
 import csv
@@ -172,7 +172,7 @@ def main():
     args = parser.parse_args()
     missing = [tool for tool in ("Xvfb", "xdotool") if shutil.which(tool) is None]
     if missing:
-        print("SKIP: %s not installed (.ci/install-deps.sh installs xvfb and xdotool)" % " and ".join(missing))
+        print("SKIP: %s not installed (.ci/install-deps.sh --tests installs xvfb and xdotool)" % " and ".join(missing))
         return SKIP
 
     work = tempfile.mkdtemp(prefix="onetip_window_test_")
