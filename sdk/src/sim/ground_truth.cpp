@@ -4,10 +4,10 @@
 
 namespace onetip::sim {
 
-void GroundTruthPose::update(GroundTruthFrame& f, const MarkerField& rest) {
+void GroundTruthPose::update(GroundTruthFrame& f, const MarkerField& rest, const MarkerField& deformed) {
   double max_modulus = 0, max_normal = 0;
   for (int i = 0; i < rest.size(); ++i) {
-    const Eigen::Vector3d u = f.markers.position[static_cast<size_t>(i)] - rest.position[static_cast<size_t>(i)];
+    const Eigen::Vector3d u = deformed.position[static_cast<size_t>(i)] - rest.position[static_cast<size_t>(i)];
     max_modulus = std::max(max_modulus, u.norm());
     max_normal = std::max(max_normal, std::abs(u.z()));
   }
@@ -30,7 +30,7 @@ void GroundTruthPose::update(GroundTruthFrame& f, const MarkerField& rest) {
     Eigen::Vector3d sum = Eigen::Vector3d::Zero();
     int n = 0;
     for (int i = 0; i < rest.size(); ++i) {
-      const Eigen::Vector3d u = f.markers.position[static_cast<size_t>(i)] - rest.position[static_cast<size_t>(i)];
+      const Eigen::Vector3d u = deformed.position[static_cast<size_t>(i)] - rest.position[static_cast<size_t>(i)];
       if (u.norm() >= fraction_ * max_normal) {
         sum += rest.position[static_cast<size_t>(i)];
         ++n;

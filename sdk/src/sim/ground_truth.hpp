@@ -46,7 +46,9 @@ class GroundTruthPose {
   // Fills frame.in_contact, frame.followed and frame.input from
   // frame.markers (S), the rest markers (S), frame.indenter_nodes and the
   // followed indenter's pose (S).
-  void update(GroundTruthFrame& frame, const MarkerField& rest);
+  void update(GroundTruthFrame& frame, const MarkerField& rest) { update(frame, rest, frame.markers); }
+  // The same with the rule applied to `deformed` (S) instead of frame.markers.
+  void update(GroundTruthFrame& frame, const MarkerField& rest, const MarkerField& deformed);
 
  private:
   double threshold_, fraction_;

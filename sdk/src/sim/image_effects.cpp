@@ -64,20 +64,6 @@ void occludingBand(cv::Mat1f& grey, const cv::Mat1b& pad, double fraction, cv::R
   grey(band).setTo(kOccluderGrey);
 }
 
-// Calls paint(x, y, distance) for every pixel within `radius` of `centre`.
-template <typename Paint>
-void forDisc(cv::Mat1f& grey, cv::Point2d centre, double radius, Paint paint) {
-  const int x0 = std::max(0, static_cast<int>(std::floor(centre.x - radius)));
-  const int x1 = std::min(grey.cols - 1, static_cast<int>(std::ceil(centre.x + radius)));
-  const int y0 = std::max(0, static_cast<int>(std::floor(centre.y - radius)));
-  const int y1 = std::min(grey.rows - 1, static_cast<int>(std::ceil(centre.y + radius)));
-  for (int y = y0; y <= y1; ++y)
-    for (int x = x0; x <= x1; ++x) {
-      const double d = std::hypot(x - centre.x, y - centre.y);
-      if (d <= radius) paint(grey(y, x), d);
-    }
-}
-
 cv::Point2d pointIn(const cv::Rect& r, cv::RNG& rng) {
   return {rng.uniform(double(r.x), double(r.x + r.width)), rng.uniform(double(r.y), double(r.y + r.height))};
 }

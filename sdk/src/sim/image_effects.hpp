@@ -20,6 +20,8 @@
 // read by the occlusion, dust and specular effects.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <functional>
 #include <opencv2/core.hpp>
@@ -29,6 +31,20 @@
 namespace onetip::sim {
 
 constexpr float kOccluderGrey = 8.0F;
+
+// Calls paint(grey value, distance) for every pixel of `grey` within `radius` px of `centre`.
+template <typename Paint>
+void forDisc(cv::Mat1f& grey, cv::Point2d centre, double radius, Paint paint) {
+  const int x0 = std::max(0, static_cast<int>(std::floor(centre.x - radius)));
+  const int x1 = std::min(grey.cols - 1, static_cast<int>(std::ceil(centre.x + radius)));
+  const int y0 = std::max(0, static_cast<int>(std::floor(centre.y - radius)));
+  const int y1 = std::min(grey.rows - 1, static_cast<int>(std::ceil(centre.y + radius)));
+  for (int y = y0; y <= y1; ++y)
+    for (int x = x0; x <= x1; ++x) {
+      const double d = std::hypot(x - centre.x, y - centre.y);
+      if (d <= radius) paint(grey(y, x), d);
+    }
+}
 
 void applyImageEffects(cv::Mat1f& grey, const cv::Mat1b& pad, const ImageEffects& effects, std::uint64_t seed);
 // out: CV_8UC1 of grey's size (may be a view into a larger frame).

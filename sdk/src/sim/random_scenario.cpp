@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <random>
 
 namespace onetip::sim {
@@ -91,9 +92,43 @@ void measureSpeeds(const IndenterTrack& track, RandomConditions& c) {
   }
 }
 
+// The world effects, each on with probability 1/2 (random_scenario.hpp).
+WorldEffects drawWorldEffects(Draw& d, double duration) {
+  WorldEffects w;
+  if (d.chance(0.5)) {
+    w.viscoelastic.relaxation = d.uniform(0.1, 0.4);
+    w.viscoelastic.time_s = d.logUniform(0.05, 5);
+  }
+  if (d.chance(0.5)) {
+    const double size = d.uniform(1, 5), angle = d.uniform(0, 2 * std::numbers::pi);
+    w.camera_shift.shift_px = {size * std::cos(angle), size * std::sin(angle)};
+    const double which = d.uniform(0, 1);
+    w.camera_shift.views = which < 0.6   ? CameraShiftOptions::Views::both
+                           : which < 0.8 ? CameraShiftOptions::Views::left
+                                         : CameraShiftOptions::Views::right;
+    w.camera_shift.at_s = d.uniform(0, duration);
+    w.camera_shift.ramp_s = d.chance(0.5) ? 0.0 : d.uniform(0.2, 2);
+  }
+  if (d.chance(0.5)) {
+    w.damage.fraction = d.uniform(0.01, 0.05);
+    w.damage.seed = static_cast<unsigned>(d.integer(0, 1 << 30));
+  }
+  if (d.chance(0.5)) {
+    w.light.flicker = d.uniform(0, 0.1);
+    w.light.exposure_step = d.uniform(-0.3, 0.3);
+    w.light.step_at_s = d.uniform(0, duration);
+  }
+  if (d.chance(0.5)) {
+    w.drift.expansion = d.uniform(-0.003, 0.003);
+    w.drift.offset_mm = {d.uniform(-0.05, 0.05), d.uniform(-0.05, 0.05), d.uniform(-0.05, 0.05)};
+    w.drift.time_s = d.logUniform(30, 600);
+  }
+  return w;
+}
+
 }  // namespace
 
-RandomScenario randomScenario(unsigned seed) {
+RandomScenario randomScenario(unsigned seed, bool world_effects) {
   Draw d(seed);
   RandomScenario out;
   RandomConditions& c = out.conditions;
@@ -173,6 +208,11 @@ RandomScenario randomScenario(unsigned seed) {
     k.depth = -0.3;
     second.keyframes.push_back(k);
     sc.indenters.push_back(second);
+  }
+  c.world_effects = world_effects;
+  if (world_effects) {
+    Draw world(seed ^ 0x5A17E0u);  // its own stream: the draws above are the same with the flag off
+    sc.world = drawWorldEffects(world, sc.duration());
   }
   return out;
 }

@@ -28,6 +28,15 @@
 //     the deeper one; the ground truth follows the finger touching most
 //     nodes at onset, and the other once that one lifts: ground_truth.hpp).
 // Keyframes are linear in time between targets (simulator: linear blend).
+// World effects (sim/world_effects.hpp), only with `world_effects` set: drawn
+// after everything above from a second generator seeded from the seed (so
+// the scenario without them is the same, draw for draw, as without the
+// flag), each on with probability 1/2: a viscoelastic gel (relaxation
+// 0.1-0.4, time 0.05-5 s log-uniform); a camera shift of 1-5 px in a
+// random direction, of both views or one, at a random time of the run, as a
+// step or a ramp of 0.2-2 s; 1-5 % of the markers hidden; flicker of 0-10 %
+// and an exposure step of -30..+30 % at a random time; rest drift (lateral
+// strain -0.3..+0.3 %, offsets up to 0.05 mm, time constant 30-600 s).
 #pragma once
 
 #include <string>
@@ -47,6 +56,7 @@ struct RandomConditions {
   bool two_fingers = false;
   double peak_speed_mm_s = 0;   // fastest keyframe segment of indenter 0: translation...
   double peak_rate_deg_s = 0;   // ...and rotation
+  bool world_effects = false;   // scenario.world drawn (see above)
 };
 
 struct RandomScenario {
@@ -54,6 +64,6 @@ struct RandomScenario {
   RandomConditions conditions;
 };
 
-RandomScenario randomScenario(unsigned seed);
+RandomScenario randomScenario(unsigned seed, bool world_effects = false);
 
 }  // namespace onetip::sim

@@ -5,8 +5,13 @@
 // checkerboard; it is projected through each VirtualCamera (with distortion),
 // rasterised with a depth test, then mirrored into its half if the camera's
 // flip is set. ImageEffects are applied last, deterministically from the seed.
+// ViewDisturbances (sim/world_effects.hpp) move a view in the image (its
+// principal point shifted, sim/camera_shift.hpp) and paint smudges over
+// hidden markers (sim/marker_damage.hpp) before the image effects.
 #pragma once
 
+#include <Eigen/Core>
+#include <array>
 #include <cstdint>
 #include <opencv2/core.hpp>
 #include <vector>
@@ -32,12 +37,20 @@ struct ImageEffects {
   void validate() const;           // throws InputError naming the bad field
 };
 
+struct ViewDisturbances {
+  // Per view (0 left, 1 right): shift of the delivered (mirrored) view, px.
+  std::array<Eigen::Vector2d, 2> shift_px{Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero()};
+  std::vector<Eigen::Vector3d> smudges;  // centres in S, mm
+  double smudge_radius_mm = 0;
+  float smudge_grey = 125.0F;            // grey level before exposure
+};
+
 class FrameRenderer {
  public:
   explicit FrameRenderer(CameraRig rig);
   // The whole frame: 2 * view_width x view_height, CV_8UC1.
-  cv::Mat render(const std::vector<CheckerSheet>& sheets, const ImageEffects& effects,
-                 std::uint64_t seed) const;
+  cv::Mat render(const std::vector<CheckerSheet>& sheets, const ImageEffects& effects, std::uint64_t seed,
+                 const ViewDisturbances& disturbances = {}) const;
   const CameraRig& rig() const { return rig_; }
 
  private:

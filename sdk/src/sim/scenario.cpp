@@ -120,6 +120,64 @@ ImageEffects readImage(const ConfigNode& node) {
   return e;
 }
 
+// The world effects (sim/world_effects.hpp): each section off when absent.
+ViscoelasticOptions readViscoelastic(const ConfigNode& node) {
+  ViscoelasticOptions v;
+  const Section s(node, {"relaxation", "time_s"}, [&] { v.validate(); });
+  s.read("relaxation", v.relaxation);
+  s.read("time_s", v.time_s);
+  return v;
+}
+
+RestDriftOptions readDrift(const ConfigNode& node) {
+  RestDriftOptions d;
+  const Section s(node, {"expansion", "offset_mm", "time_s"}, [&] { d.validate(); });
+  s.read("expansion", d.expansion);
+  s.readWith("offset_mm", [&](const ConfigNode& n) {
+    const auto o = n.reals(3, -kLimit, kLimit);
+    d.offset_mm = {o[0], o[1], o[2]};
+  });
+  s.read("time_s", d.time_s);
+  return d;
+}
+
+CameraShiftOptions readCameraShift(const ConfigNode& node) {
+  CameraShiftOptions c;
+  const Section s(node, {"px", "at_s", "ramp_s", "view"}, [&] { c.validate(); });
+  s.readWith("px", [&](const ConfigNode& n) {
+    const auto p = n.reals(2, -kLimit, kLimit);
+    c.shift_px = {p[0], p[1]};
+  });
+  s.read("at_s", c.at_s);
+  s.read("ramp_s", c.ramp_s);
+  s.readWith("view", [&](const ConfigNode& n) {
+    if (!cameraShiftViewsFromString(n.text(), c.views)) n.fail("expected 'both', 'left' or 'right'");
+  });
+  return c;
+}
+
+MarkerDamageOptions readDamage(const ConfigNode& node, const MarkerPattern& pattern) {
+  MarkerDamageOptions d;
+  const Section s(node, {"ids", "fraction", "seed", "radius"}, [&] { d.validate(); });
+  s.readWith("ids", [&](const ConfigNode& n) {
+    if (!n.isSeq()) n.fail("expected a list of marker ids");
+    for (size_t i = 0; i < n.size(); ++i) d.ids.push_back(n[i].integer(0, pattern.count() - 1));
+  });
+  s.read("fraction", d.fraction);
+  s.readWith("seed", [&](const ConfigNode& n) { d.seed = static_cast<unsigned>(n.integer(0, 2147483647)); });
+  s.read("radius", d.radius);
+  return d;
+}
+
+LightFlickerOptions readLight(const ConfigNode& node) {
+  LightFlickerOptions l;
+  const Section s(node, {"flicker", "exposure_step", "step_at_s"}, [&] { l.validate(); });
+  s.read("flicker", l.flicker);
+  s.read("exposure_step", l.exposure_step);
+  s.read("step_at_s", l.step_at_s);
+  return l;
+}
+
 CalibrationTarget readTarget(const ConfigNode& node) {
   CalibrationTarget g;
   const Section s(node,
@@ -237,7 +295,8 @@ std::vector<Eigen::Isometry3d> Scenario::posesAt(double t, const PadLattice& lat
 
 Scenario loadScenario(const std::string& path) {
   const ConfigNode root = ConfigNode::load(path);
-  root.allowOnly({"name", "description", "kind", "fps", "seed", "pad", "camera", "image", "indenters", "target"});
+  root.allowOnly({"name", "description", "kind", "fps", "seed", "pad", "camera", "image", "indenters", "target",
+                  "viscoelastic", "drift", "camera_shift", "damage", "light"});
   Scenario sc;
   sc.name = root["name"].text();
   if (sc.name.empty()) root["name"].fail("must not be empty");
@@ -249,6 +308,11 @@ Scenario loadScenario(const std::string& path) {
   sc.pad = readPad(root["pad"]);
   sc.camera = readCamera(root["camera"]);
   sc.image = readImage(root["image"]);
+  sc.world.viscoelastic = readViscoelastic(root["viscoelastic"]);
+  sc.world.drift = readDrift(root["drift"]);
+  sc.world.camera_shift = readCameraShift(root["camera_shift"]);
+  sc.world.damage = readDamage(root["damage"], sc.pad.pattern);
+  sc.world.light = readLight(root["light"]);
   if (sc.isCalibration()) {
     sc.target = readTarget(root["target"]);
     return sc;

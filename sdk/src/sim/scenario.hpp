@@ -16,7 +16,11 @@
 // A calibration scenario (kind: calibration) instead shows a rigid
 // checkerboard target at `poses` random poses (see CalibrationTarget).
 // Optional sections: pad (PadOptions), camera (CameraRigOptions), image
-// (ImageEffects), fps (default 30), seed.
+// (ImageEffects), fps (default 30), seed, and the world effects, each off
+// when absent (sim/world_effects.hpp): viscoelastic {relaxation, time_s},
+// drift {expansion, offset_mm, time_s}, camera_shift {px, at_s, ramp_s,
+// view}, damage {ids, fraction, seed, radius}, light {flicker,
+// exposure_step, step_at_s}.
 #pragma once
 
 #include <Eigen/Geometry>
@@ -27,6 +31,7 @@
 #include "sim/indenter.hpp"
 #include "sim/pad.hpp"
 #include "sim/renderer.hpp"
+#include "sim/world_effects.hpp"
 
 namespace onetip::sim {
 
@@ -59,6 +64,7 @@ struct Scenario {
   PadOptions pad;
   CameraRigOptions camera;
   ImageEffects image;
+  WorldEffects world;
   std::vector<IndenterTrack> indenters;
   CalibrationTarget target;
 

@@ -1,5 +1,6 @@
 #include "sim/simulator.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -8,6 +9,7 @@
 #include "core/sensor_frame.hpp"
 #include "sim/contact_model.hpp"
 #include "sim/sheet_builder.hpp"
+#include "sim/viscoelastic_layer.hpp"
 
 namespace onetip::sim {
 
@@ -45,6 +47,21 @@ struct Simulator::Impl {
   GroundTruthFrame frame;
   std::vector<Eigen::Isometry3d> target_poses;  // calibration scenes (P)
   int index = -1;
+  // World effects (sim/world_effects.hpp); all idle when the scenario has none.
+  std::unique_ptr<ViscoelasticLayer> layer;     // set when the gel relaxes
+  std::vector<Eigen::Vector3d> elastic;         // the contact model's own displacements, per node (with layer)
+  std::vector<int> hidden;                      // marker ids hidden for good
+  double layer_t = 0;                           // time the layer was last advanced to
+
+  // A node's rest point (P) at time t, drifted if the scenario drifts.
+  Eigen::Vector3d restAt(int node, double t) const {
+    const Eigen::Vector3d p = lattice->markerLayerRest(node);
+    return sc.world.drift.enabled() ? sc.world.drift.apply(p, t) : p;
+  }
+  // A node's displacement (P): elastic, or elastic + delayed with the layer.
+  Eigen::Vector3d displacementOf(int node) const {
+    return layer ? layer->total()[static_cast<size_t>(node)] : model->displacement(node);
+  }
 
   MarkerPattern pattern() const {
     if (sc.isCalibration()) return {sc.target.rows, sc.target.cols, sc.target.square_mm};
@@ -60,10 +77,15 @@ struct Simulator::Impl {
   void fillTouchFrame(double t, const std::vector<Eigen::Isometry3d>& poses) {
     frame.t = t;
     model->advance(poses);
+    if (layer) {
+      elastic = model->allDisplacements();
+      layer->advance(elastic, std::max(0.0, t - layer_t));
+      layer_t = t;
+    }
     const MarkerPattern p = sc.pad.pattern;
     for (int id = 0; id < p.count(); ++id) {
       const int node = lattice->nodeOfMarker(id);
-      frame.markers.set(id, S_from_P * (lattice->markerLayerRest(node) + model->displacement(node)));
+      frame.markers.set(id, S_from_P * (restAt(node, t) + displacementOf(node)));
       const auto& c = model->node(node);
       frame.contact[static_cast<size_t>(id)] = c.contact;
       frame.slip[static_cast<size_t>(id)] = c.contact && c.slip;
@@ -77,7 +99,20 @@ struct Simulator::Impl {
     }
     frame.indenter_poses.clear();
     for (const auto& T : poses) frame.indenter_poses.push_back(S_from_P * T);
-    gt_pose.update(frame, rest);
+    for (int id : hidden) frame.markers.valid[static_cast<size_t>(id)] = 0;
+    if (!layer && !sc.world.drift.enabled()) {
+      gt_pose.update(frame, rest);
+      return;
+    }
+    // The truth's contact rule on what the indenters do now, against the rest as it is now (ground_truth.hpp).
+    MarkerField rest_now(p), deformed(p);
+    for (int id = 0; id < p.count(); ++id) {
+      const int node = lattice->nodeOfMarker(id);
+      const Eigen::Vector3d r = restAt(node, t);
+      rest_now.set(id, S_from_P * r);
+      deformed.set(id, S_from_P * (r + (layer ? elastic[static_cast<size_t>(node)] : model->displacement(node))));
+    }
+    gt_pose.update(frame, rest_now, deformed);
   }
 
   void fillCalibrationFrame(int k) {
@@ -124,6 +159,13 @@ Simulator::Simulator(Scenario scenario, SimulatorOptions options) : impl_(std::m
   for (const auto& tr : m.sc.indenters) shapes.push_back(tr.geometry);
   m.model = std::make_unique<ContactModel>(*m.lattice, shapes);
   m.model->reset(m.sc.posesAt(0.0, *m.lattice));
+  if (m.sc.world.viscoelastic.enabled())
+    m.layer = std::make_unique<ViscoelasticLayer>(m.sc.world.viscoelastic, m.lattice->nodeCount());
+  m.sc.world.drift.validate();
+  m.sc.world.camera_shift.validate();
+  m.sc.world.light.validate();
+  m.sc.world.damage.validate();
+  m.hidden = m.sc.world.damage.hiddenIds(p);
   MarkerField rest_P(p);
   for (int id = 0; id < p.count(); ++id) rest_P.set(id, m.lattice->markerLayerRest(m.lattice->nodeOfMarker(id)));
   // S from the rest markers as the SDK derives it; the camera "L" here is P
@@ -177,10 +219,10 @@ cv::Mat Simulator::render() const {
   if (m.sc.isCalibration()) {
     sheets.push_back(rigidBoard(m.texture(), m.frame.indenter_poses.front(), kRenderSpacingMm));
   } else {
-    const auto u = m.model->allDisplacements();
+    const auto u = m.layer ? m.layer->total() : m.model->allDisplacements();
     std::vector<Eigen::Vector3d> nodes(u.size());
     for (int i = 0; i < m.lattice->nodeCount(); ++i)
-      nodes[static_cast<size_t>(i)] = m.S_from_P * (m.lattice->markerLayerRest(i) + u[static_cast<size_t>(i)]);
+      nodes[static_cast<size_t>(i)] = m.S_from_P * (m.restAt(i, m.frame.t) + u[static_cast<size_t>(i)]);
     const int factor = std::max(1, static_cast<int>(std::lround(m.lattice->spacing() / kRenderSpacingMm)));
     sheets.push_back(refineLattice(nodes, m.lattice->nu(), m.lattice->nv(), m.lattice->u0(), m.lattice->v0(),
                                    m.lattice->spacing(), factor, m.texture()));
@@ -188,7 +230,17 @@ cv::Mat Simulator::render() const {
   const std::uint64_t frame_seed = static_cast<std::uint64_t>(m.seed) * 1000003ull + static_cast<std::uint64_t>(m.index);
   ImageEffects effects = m.sc.image;
   effects.layout_seed = m.seed;  // dust, spots and occluders stay put for the whole run
-  return m.renderer->render(sheets, effects, frame_seed);
+  const WorldEffects& w = m.sc.world;
+  if (w.light.enabled())  // within the exposure's own range, where the sensor clips anyway
+    effects.exposure = std::clamp(effects.exposure * w.light.gain(m.frame.t, m.seed, m.index), 0.2, 3.0);
+  ViewDisturbances disturbances;
+  for (int view = 0; view < 2; ++view)
+    disturbances.shift_px[static_cast<size_t>(view)] = w.camera_shift.shiftAt(m.frame.t, view);
+  for (int id : m.hidden) disturbances.smudges.push_back(m.frame.markers.position[static_cast<size_t>(id)]);
+  const CheckerTexture texture = m.texture();
+  disturbances.smudge_radius_mm = w.damage.radius * texture.square_mm;
+  disturbances.smudge_grey = static_cast<float>(0.5 * (texture.dark + texture.light));
+  return m.renderer->render(sheets, effects, frame_seed, disturbances);
 }
 
 void Simulator::setImageEffects(const ImageEffects& effects) {
