@@ -1,10 +1,9 @@
 // AtomicFile against hostile targets (core/atomic_file.hpp): a device, a
 // folder or a FIFO is refused; a planted symlink at the old staging name, or
-// as the target, never gets its pointee written; staging files of killed runs
-// are removed and nothing else is.
+// as the target, never gets its pointee written. (Which staging of killed runs
+// is removed: test_staging_owner.cpp.)
 #include <gtest/gtest.h>
 #include <sys/stat.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <filesystem>
@@ -32,14 +31,6 @@ void writeAtomically(const std::string& path, const std::string& text) {
   AtomicFile f(path);
   f.stream() << text;
   f.commit();
-}
-
-// A pid that was used and whose process is gone (reaped).
-pid_t deadPid() {
-  const pid_t pid = ::fork();
-  if (pid == 0) ::_exit(0);
-  ::waitpid(pid, nullptr, 0);
-  return pid;
 }
 
 TEST(AtomicFile, RefusesDevicesFoldersAndFifos) {
@@ -88,27 +79,6 @@ TEST(AtomicFile, WithoutCommitNothingIsLeftAndTheTargetIsUntouched) {
   size_t entries = 0;
   for (const auto& e : fs::directory_iterator(dir.path())) entries += e.path() == target ? 1 : 100;
   EXPECT_EQ(entries, 1u);
-}
-
-TEST(AtomicFile, StagingOfKilledRunsIsRemovedAndNothingElse) {
-  const test_support::ScratchDir dir("onetip-atomic");
-  const std::string target = dir.file("pose.csv");
-  const std::string dead = std::to_string(deadPid());
-  const std::string alive = std::to_string(::getppid());
-  for (const std::string& name : {target + ".tmp." + dead, target + ".tmp." + dead + ".Ab12Cd", target + ".tmp." + alive + ".x",
-                                  target + ".tmpfoo", target + ".tmp.notapid", dir.file("other.csv.tmp." + dead)})
-    std::ofstream(name) << "x";
-  fs::create_directory(target + ".tmp." + dead + ".dir");
-  std::ofstream(target + ".tmp." + dead + ".dir/inner") << "x";
-  writeAtomically(target, "a\n");
-  EXPECT_FALSE(fs::exists(target + ".tmp." + dead));
-  EXPECT_FALSE(fs::exists(target + ".tmp." + dead + ".Ab12Cd"));
-  EXPECT_FALSE(fs::exists(target + ".tmp." + dead + ".dir"));
-  EXPECT_TRUE(fs::exists(target + ".tmp." + alive + ".x"));  // a live process's staging file
-  EXPECT_TRUE(fs::exists(target + ".tmpfoo"));
-  EXPECT_TRUE(fs::exists(target + ".tmp.notapid"));
-  EXPECT_TRUE(fs::exists(dir.file("other.csv.tmp." + dead)));  // another target's
-  EXPECT_EQ(readAll(target), "a\n");
 }
 
 TEST(AtomicFile, CommittedFileHasTheUmasksRegularMode) {
