@@ -35,13 +35,16 @@ inline int exitCodeOf(int status) { return WIFEXITED(status) ? WEXITSTATUS(statu
 
 // Runs `onetip::test::cliPath() args` through /bin/sh (stdout discarded, stderr to err_file).
 // When `signal_when` is given, polls it every 20 ms and sends `sig` once it
-// returns true (then waits); gives up on signalling after 60 s.
+// returns true (then waits); gives up on signalling after 60 s. `in_child`
+// runs in the child before the program starts (e.g. to lower a limit).
 inline CliRun runCli(const std::string& args, const std::string& err_file,
-                     const std::function<bool()>& signal_when = {}, int sig = SIGINT) {
+                     const std::function<bool()>& signal_when = {}, int sig = SIGINT,
+                     const std::function<void()>& in_child = {}) {
   CliRun r;
   const std::string cmd = std::string("exec ") + onetip::test::cliPath() + " " + args + " >/dev/null 2>" + err_file;
   const pid_t pid = ::fork();
   if (pid == 0) {
+    if (in_child) in_child();
     ::execl("/bin/sh", "sh", "-c", cmd.c_str(), static_cast<char*>(nullptr));
     ::_exit(127);
   }
