@@ -11,8 +11,10 @@
 #include "core/csv_table.hpp"
 #include "core/error.hpp"
 #include "core/pose_csv.hpp"
+#include "frame_tally.hpp"
 #include "interrupt.hpp"
 #include "output_paths.hpp"
+#include "process_outputs.hpp"
 #include "pipeline/frame_processor.hpp"
 #include "pipeline/open_pipeline.hpp"
 
@@ -36,12 +38,12 @@ int runProcess(const Args& args) {
     if (r.status != pipeline::FrameStatus::reference) throw InputError("--reference " + *ref + ": " + r.message);
   }
 
-  CsvWriter pose(args.get("out"), poseCsvHeader(true));
-  std::unique_ptr<CsvWriter> markers, timing;
-  if (auto p = args.optional("markers")) markers = std::make_unique<CsvWriter>(*p, std::vector<std::string>{"frame", "id", "x", "y", "z"});
-  if (auto p = args.optional("timing")) timing = std::make_unique<CsvWriter>(*p, std::vector<std::string>{"frame", "stage", "ms"});
+  ProcessOutputs outputs(args.get("out"), args.optional("markers"), args.optional("timing"));
+  CsvWriter& pose = outputs.pose();
+  CsvWriter* const markers = outputs.markers();
+  CsvWriter* const timing = outputs.timing();
 
-  int processed = 0, skipped = 0, lost = 0, errors = 0, consecutive_errors = 0;
+  int processed = 0, skipped = 0, unreadable = 0, lost = 0, errors = 0, consecutive_errors = 0;
   std::vector<double> process_ms;
   const bool quiet = args.has("quiet");
   // Ctrl-C or SIGTERM ends the stream: the frames done so far are written (a live camera ends only this way).
@@ -60,6 +62,7 @@ int runProcess(const Args& args) {
     consecutive_errors = 0;
     if (frame.status == capture::FrameStatus::skipped) {
       ++skipped;
+      ++unreadable;
       std::cerr << "onetip process: frame " << frame.index << " skipped: " << frame.message << "\n";
       continue;
     }
@@ -88,6 +91,7 @@ int runProcess(const Args& args) {
                {"process", r.times.process}})
         timing->row({k, stage, formatNumber(ms, 4)});
     process_ms.push_back(r.times.process);
+    if (!outputs.endFrame()) break;  // a write failed (a full disk): known at this frame, not after the input
     if (!quiet) {
       const Input6& v = r.pose.raw;
       std::printf("frame %5lld  %-12s dx %7.3f dy %7.3f dz %7.3f  yaw %7.2f pitch %7.2f roll %7.2f  (%d/%d markers)\n",
@@ -103,14 +107,14 @@ int runProcess(const Args& args) {
     }
     throw InputError(args.get("input") + ": no usable frame");
   }
-  pose.commit();
-  if (markers) markers->commit();
-  if (timing) timing->commit();
+  outputs.commit();
+  if (!outputs.failure().empty()) return 1;
   std::nth_element(process_ms.begin(), process_ms.begin() + static_cast<long>(process_ms.size() / 2), process_ms.end());
   std::printf("%s %d frames (%d skipped, %d lost, %d source errors); median processing %.2f ms per frame\n",
               interruptRequested() ? "interrupted: wrote the" : "processed", processed, skipped, lost, errors,
               process_ms[process_ms.size() / 2]);
-  return interruptRequested() ? kInterruptedExit : 0;
+  if (interruptRequested()) return kInterruptedExit;
+  return unreadableFramesExit("onetip process", unreadable + errors, processed + skipped + lost + errors);
 }
 
 const CommandRegistrar reg{{

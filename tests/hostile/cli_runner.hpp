@@ -4,6 +4,7 @@
 #pragma once
 
 #include <signal.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -70,6 +71,15 @@ inline CliRun runCli(const std::string& args, const std::string& err_file,
   r.exit_code = exitCodeOf(status);
   r.err = readText(err_file);
   return r;
+}
+
+// For runCli's in_child: a full disk, as a file-size limit (writes past it fail with EFBIG; SIGXFSZ ignored).
+inline std::function<void()> fileSizeLimit(rlim_t bytes) {
+  return [bytes] {
+    ::signal(SIGXFSZ, SIG_IGN);
+    const rlimit limit{bytes, bytes};
+    ::setrlimit(RLIMIT_FSIZE, &limit);
+  };
 }
 
 // True when some entry of `dir` has a name containing `part`.

@@ -5,7 +5,6 @@
 // so far as a whole session; a commit that fails keeps the staging folder and
 // names it; a live run in another PID namespace keeps its staging.
 #include <gtest/gtest.h>
-#include <sys/resource.h>
 
 #include <chrono>
 #include <filesystem>
@@ -110,15 +109,6 @@ void writeFrames(const fs::path& folder, int count, int noisy_from) {
     std::snprintf(name, sizeof name, "%04d.png", i);
     ASSERT_TRUE(cv::imwrite((folder / name).string(), grey));
   }
-}
-
-// A full disk, as a file-size limit: writes past it fail with EFBIG (SIGXFSZ ignored).
-std::function<void()> fileSizeLimit(rlim_t bytes) {
-  return [bytes] {
-    ::signal(SIGXFSZ, SIG_IGN);
-    const rlimit limit{bytes, bytes};
-    ::setrlimit(RLIMIT_FSIZE, &limit);
-  };
 }
 
 TEST(HostileRecording, AWriteThatFailsKeepsTheFramesSoFarAsAWholeSession) {

@@ -1,6 +1,8 @@
 #include "capture/image_file.hpp"
 
 #include <algorithm>
+#include <cerrno>
+#include <cstring>
 #include <fstream>
 #include <opencv2/imgcodecs.hpp>
 #include <vector>
@@ -144,9 +146,10 @@ std::optional<std::string> imageHeaderProblem(const std::uint8_t* data, std::siz
 
 std::optional<std::string> readFileBytes(const std::string& path, std::size_t max_bytes,
                                          std::vector<std::uint8_t>& bytes) {
+  errno = 0;
   std::ifstream in(path, std::ios::binary | std::ios::ate);
   const std::streamoff size = in ? static_cast<std::streamoff>(in.tellg()) : -1;
-  if (size < 0) return "cannot read the file";
+  if (size < 0) return errno != 0 ? std::string("cannot read the file (") + std::strerror(errno) + ")" : "cannot read the file";
   if (static_cast<std::uint64_t>(size) > max_bytes)
     return "file of " + std::to_string(size) + " bytes, over the " + std::to_string(max_bytes) +
            "-byte bound for one frame";

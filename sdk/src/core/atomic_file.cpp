@@ -18,10 +18,44 @@ namespace onetip {
 
 namespace fs = std::filesystem;
 
+namespace {
+
+// A file buffer that remembers the errno of its first failed write: a stream
+// that went bad while writing a row says why only through this.
+class ErrnoFilebuf : public __gnu_cxx::stdio_filebuf<char> {
+ public:
+  using __gnu_cxx::stdio_filebuf<char>::stdio_filebuf;
+  int error = 0;
+
+ protected:
+  int_type overflow(int_type c) override {
+    const int_type r = stdio_filebuf::overflow(c);
+    if (traits_type::eq_int_type(r, traits_type::eof())) remember();
+    return r;
+  }
+  std::streamsize xsputn(const char* s, std::streamsize n) override {
+    const std::streamsize r = stdio_filebuf::xsputn(s, n);
+    if (r < n) remember();
+    return r;
+  }
+  int sync() override {
+    const int r = stdio_filebuf::sync();
+    if (r != 0) remember();
+    return r;
+  }
+
+ private:
+  void remember() {
+    if (error == 0) error = errno != 0 ? errno : EIO;
+  }
+};
+
+}  // namespace
+
 struct AtomicFile::Staging {
   std::string path;
   int fd = -1;
-  std::unique_ptr<__gnu_cxx::stdio_filebuf<char>> buffer;
+  std::unique_ptr<ErrnoFilebuf> buffer;
   std::unique_ptr<std::ostream> out;
   off_t flushed = 0;         // bytes up to the last successful flush(): whole rows
   bool failed = false;       // the last flush() failed; the file is cut back to `flushed` before anything else
@@ -93,7 +127,7 @@ AtomicFile::AtomicFile(std::string path) : path_(std::move(path)), staging_(std:
   ::fchmod(fd, 0666 & ~currentUmask());
   staging_->path = name;
   staging_->fd = fd;
-  staging_->buffer = std::make_unique<__gnu_cxx::stdio_filebuf<char>>(fd, std::ios::out | std::ios::binary);
+  staging_->buffer = std::make_unique<ErrnoFilebuf>(fd, std::ios::out | std::ios::binary);
   staging_->out = std::make_unique<std::ostream>(staging_->buffer.get());
 }
 
@@ -115,11 +149,14 @@ void AtomicFile::flush() {
     if (::ftruncate(st.fd, st.flushed) != 0 || ::lseek(st.fd, st.flushed, SEEK_SET) != st.flushed)
       throw InputError(st.failure);
     st.out->clear();
+    st.buffer->error = 0;
   }
-  st.retryable = ::lseek(st.fd, 0, SEEK_CUR) == st.flushed;
+  // The record can be written again only if all of it is still in the buffer: nothing of it was written
+  // (or failed to be, dropping what the stream then refused) before this flush.
+  st.retryable = ::lseek(st.fd, 0, SEEK_CUR) == st.flushed && st.buffer->error == 0 && *st.out;
   errno = 0;
   st.out->flush();
-  const int error = errno != 0 ? errno : EIO;
+  const int error = st.buffer->error != 0 ? st.buffer->error : errno != 0 ? errno : EIO;
   const off_t at = ::lseek(st.fd, 0, SEEK_CUR);
   st.failed = !*st.out || at < 0;
   if (!st.failed) {
@@ -161,7 +198,7 @@ void AtomicFile::commit() {
   errno = 0;
   out.flush();
   const bool flushed = static_cast<bool>(out);
-  const int flush_error = errno;
+  const int flush_error = staging_->buffer->error != 0 ? staging_->buffer->error : errno;
   const bool written = flushed && staging_->buffer->close() != nullptr;
   const int error = flushed ? errno : flush_error;
   if (!written) throw InputError(path_ + ": write failed (" + std::strerror(error != 0 ? error : EIO) + ")");

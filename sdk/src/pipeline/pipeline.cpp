@@ -294,6 +294,7 @@ PipelineStats Pipeline::stats() const {
   s.frames_processed = p.processed;
   s.frames_dropped = shared_->frames.dropped();
   s.frames_skipped = shared_->skipped + p.skipped;
+  s.frames_unreadable = shared_->skipped;
   s.frames_lost = p.lost;
   s.source_errors = shared_->source_errors;
   s.events_emitted = p.emitted;

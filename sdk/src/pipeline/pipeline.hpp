@@ -83,6 +83,7 @@ struct PipelineStats {
   std::int64_t frames_captured = 0, frames_processed = 0, frames_dropped = 0, frames_skipped = 0,
                frames_lost = 0, source_errors = 0, events_emitted = 0, events_dropped = 0,
                frame_results_dropped = 0, callback_errors = 0;
+  std::int64_t frames_unreadable = 0;  // of frames_skipped: skipped by the source (unreadable, malformed)
   bool source_abandoned = false;
   std::vector<StageSummary> stages;  // capture, queue, detect, track, triangulate, contact, pose, process, delivery
 };
