@@ -113,11 +113,14 @@ class Pipeline {
   void onEvent(EventCallback callback);
   void onFrame(FrameCallback callback);
 
+  static constexpr double kNoTimeLimitS = 1e9;
+
   void start();
   void stop();
   bool running() const noexcept;
   bool finished() const noexcept;
-  // Until the processing thread has ended (finished or stopped) or the timeout (< 0: none); returns finished().
+  // Until the processing thread has ended (finished or stopped; stop() before start() ends a pipeline that
+  // then never runs) or the timeout (< 0, infinite or >= kNoTimeLimitS: none; NaN: InputError); returns finished().
   bool waitFinished(double timeout_s) const;
 
   bool pollEvent(PipelineEvent& out);
