@@ -43,8 +43,10 @@ TEST(HostileRecording, KilledAtRandomMomentsItReplaysEveryCompleteFrameWithItsTi
   const ScratchDir dir("onetip-hostile-rec");
   constexpr int kFrames = 16;
   const std::string frames = " --frames " + std::to_string(kFrames);
+  const auto ref_start = Clock::now();
   const CliRun ref = runCli("record --input sim:" + kDemo + frames + " --out " + dir.file("ref"), dir.file("err"));
   ASSERT_EQ(ref.exit_code, 0) << ref.err;
+  const auto ref_ms = std::chrono::duration_cast<std::chrono::milliseconds>(Clock::now() - ref_start).count();
   const CsvTable ref_rows = readCsv(dir.file("ref/session.csv"));
   ASSERT_EQ(ref_rows.rows.size(), static_cast<size_t>(kFrames));
   const CliRun ref_replay = runCli(processArgs(dir.path() / "ref", dir.file("ref"), dir.file("ref_pose.csv")), dir.file("err"));
@@ -53,8 +55,8 @@ TEST(HostileRecording, KilledAtRandomMomentsItReplaysEveryCompleteFrameWithItsTi
 
   const unsigned seed = std::random_device{}();
   std::mt19937 random(seed);
-  std::uniform_int_distribution<int> delay_ms(0, 1000);
-  int replayed = 0;
+  std::uniform_int_distribution<int> delay_ms(0, static_cast<int>(ref_ms));  // a moment of a whole run
+  int replayed = 0, killed = 0;
   for (int attempt = 0; attempt < 10; ++attempt) {
     const std::string name = "run" + std::to_string(attempt);
     const int delay = delay_ms(random);
@@ -71,6 +73,7 @@ TEST(HostileRecording, KilledAtRandomMomentsItReplaysEveryCompleteFrameWithItsTi
                  std::to_string(delay) + " ms in");
     fs::path left = dir.path() / name;  // finished before the kill: the committed session
     if (run.signalled) {
+      ++killed;
       ASSERT_EQ(run.exit_code, 128 + SIGKILL) << run.err;
       left = entryStartingWith(dir.path(), name + ".partial.");
       ASSERT_FALSE(left.empty()) << "the killed recording was not kept";
@@ -95,6 +98,7 @@ TEST(HostileRecording, KilledAtRandomMomentsItReplaysEveryCompleteFrameWithItsTi
     for (size_t i = 0; i < replayed_pose.rows.size(); ++i) EXPECT_EQ(replayed_pose.rows[i], ref_pose.rows[i]);
     ++replayed;
   }
+  EXPECT_GT(killed, 0) << "every run ended before its kill";
   EXPECT_GT(replayed, 0) << "no attempt left a frame to replay";
 }
 
