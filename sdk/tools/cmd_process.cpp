@@ -11,8 +11,10 @@
 #include "core/csv_table.hpp"
 #include "core/error.hpp"
 #include "core/pose_csv.hpp"
+#include "frame_tally.hpp"
 #include "interrupt.hpp"
 #include "output_paths.hpp"
+#include "process_outputs.hpp"
 #include "pipeline/frame_processor.hpp"
 #include "pipeline/open_pipeline.hpp"
 
@@ -37,10 +39,10 @@ int runProcess(const Args& args) {
     if (r.status != pipeline::FrameStatus::reference) throw InputError("--reference " + *ref + ": " + r.message);
   }
 
-  CsvWriter pose(args.get("out"), poseCsvHeader(true));
-  std::unique_ptr<CsvWriter> markers, timing;
-  if (auto p = args.optional("markers")) markers = std::make_unique<CsvWriter>(*p, std::vector<std::string>{"frame", "id", "x", "y", "z"});
-  if (auto p = args.optional("timing")) timing = std::make_unique<CsvWriter>(*p, std::vector<std::string>{"frame", "stage", "ms"});
+  ProcessOutputs outputs(args.get("out"), args.optional("markers"), args.optional("timing"));
+  CsvWriter& pose = outputs.pose();
+  CsvWriter* const markers = outputs.markers();
+  CsvWriter* const timing = outputs.timing();
 
   // unreadable: frames the source could not read or decode, or that cannot be used (wrong size, blank);
   // lost: readable frames on which too few markers were found or tracked.
@@ -91,6 +93,7 @@ int runProcess(const Args& args) {
                {"process", r.times.process}})
         timing->row({k, stage, formatNumber(ms, 4)});
     process_ms.push_back(r.times.process);
+    if (!outputs.endFrame()) break;  // a write failed (a full disk): known at this frame, not after the input
     if (!quiet) {
       const Input6& v = r.pose.raw;
       std::printf("frame %5lld  %-12s dx %7.3f dy %7.3f dz %7.3f  yaw %7.2f pitch %7.2f roll %7.2f  (%d/%d markers)\n",
@@ -113,9 +116,8 @@ int runProcess(const Args& args) {
     throw InputError(args.get("input") + ": " + std::to_string(unreadable) + " of " + std::to_string(delivered) +
                      " frames could not be read or used (the lines above say why); more than half, so nothing is "
                      "written");
-  pose.commit();
-  if (markers) markers->commit();
-  if (timing) timing->commit();
+  outputs.commit();
+  if (!outputs.failure().empty()) return 1;
   std::nth_element(process_ms.begin(), process_ms.begin() + static_cast<long>(process_ms.size() / 2), process_ms.end());
   std::printf("%s %d of %d frames (%d unreadable, %d lost, %d source errors); median processing %.2f ms per frame\n",
               interruptRequested() ? "interrupted: wrote" : "processed", processed, delivered, unreadable, lost, errors,

@@ -2,6 +2,7 @@
 
 #include <cstdio>
 
+#include "frame_tally.hpp"
 #include "interrupt.hpp"
 #include "pipeline/open_pipeline.hpp"
 #include "pipeline/options_io.hpp"
@@ -40,11 +41,14 @@ int runPipelineUntilInterrupted(pipeline::Pipeline& p, const std::function<bool(
   }
   p.stop();
   const pipeline::PipelineStats s = p.stats();
-  std::fprintf(stderr, "%s: %lld frames processed, %lld dropped, %lld lost, %lld source errors\n",
+  std::fprintf(stderr, "%s: %lld frames processed, %lld skipped (%lld unreadable), %lld dropped, %lld lost, %lld source errors\n",
                interruptRequested() ? "interrupted" : "source ended", static_cast<long long>(s.frames_processed),
+               static_cast<long long>(s.frames_skipped), static_cast<long long>(s.frames_unreadable),
                static_cast<long long>(s.frames_dropped), static_cast<long long>(s.frames_lost),
                static_cast<long long>(s.source_errors));
-  return interruptRequested() ? kInterruptedExit : 0;
+  if (interruptRequested()) return kInterruptedExit;
+  const long long unreadable = s.frames_unreadable + s.source_errors;
+  return unreadableFramesExit("onetip", unreadable, s.frames_captured + unreadable);
 }
 
 }  // namespace onetip::tools

@@ -27,8 +27,9 @@ std::unique_ptr<pipeline::Pipeline> openPipelineFromArgs(const Args& args, const
 // Starts `p`, waits until SIGINT/SIGTERM (handlers installed for the call) or
 // the source ends, then stops it. `ready` runs after the handlers are in place
 // and before start (e.g. to wait for a first client); returning false stops
-// without starting. Prints a one-line summary to stderr. Returns 0, or 130
-// after an interrupt.
+// without starting. Prints a one-line summary to stderr (skipped frames
+// included). Returns 0, 130 after an interrupt, or 1 when most frames were
+// unreadable (frame_tally.hpp).
 int runPipelineUntilInterrupted(pipeline::Pipeline& p, const std::function<bool()>& ready = {});
 
 }  // namespace onetip::tools

@@ -1,10 +1,12 @@
 // The C ABI's refusals that keep a host from deadlocking (issue 17): waiting on
 // a sensor from its own callback, two callbacks stopping each other's sensors,
-// and time-outs of INFINITY / 1e300 (which returned at once) or NaN.
+// time-outs of INFINITY / 1e300 (which returned at once) or NaN, and (issue 39)
+// a wait without limit on a sensor never started, released by its destruction.
 #include <gtest/gtest.h>
 
 #include <atomic>
 #include <chrono>
+#include <future>
 #include <cmath>
 #include <string>
 #include <thread>
@@ -128,6 +130,43 @@ TEST(CAbiGuards, InfiniteAndHugeTimeoutsWaitWithoutLimitAndNaNIsRefused) {
     EXPECT_EQ(onetip_sensor_wait_event(s, NAN, &e, &got, &err), ONETIP_ERROR_INPUT);
     EXPECT_EQ(onetip_sensor_destroy(s, &err), ONETIP_OK) << err.message;
   }
+}
+
+// Waits without limit on `s` in another thread; the future holds the call's status and `finished`.
+std::future<std::pair<int32_t, int32_t>> waitFinishedElsewhere(onetip_sensor* s) {
+  std::promise<std::pair<int32_t, int32_t>> returned;
+  auto result = returned.get_future();
+  std::thread([s, p = std::move(returned)]() mutable {
+    onetip_error err;
+    int32_t finished = -1;
+    const int32_t status = onetip_sensor_wait_finished(s, INFINITY, &finished, &err);
+    p.set_value({status, finished});
+  }).detach();  // detached: a waiter that never returns fails the test instead of hanging it
+  return result;
+}
+
+TEST(CAbiGuards, AWaitWithoutLimitOnASensorNeverStartedReturnsWhenAnotherThreadDestroysIt) {
+  onetip_sensor* s = makeSensor();
+  ASSERT_NE(s, nullptr);
+  auto waiter = waitFinishedElsewhere(s);
+  // Nothing ends a sensor nobody started: the waiter waits (for a start, or as here a destruction).
+  ASSERT_EQ(waiter.wait_for(std::chrono::milliseconds(300)), std::future_status::timeout);
+  onetip_error err;
+  ASSERT_EQ(onetip_sensor_destroy(s, &err), ONETIP_OK) << err.message;
+  ASSERT_EQ(waiter.wait_for(std::chrono::seconds(30)), std::future_status::ready) << "the waiter never returned";
+  EXPECT_EQ(waiter.get(), std::make_pair(int32_t{ONETIP_OK}, int32_t{0}));  // returned, not finished
+}
+
+TEST(CAbiGuards, AStopBeforeStartEndsTheSensorForWaitersAndItNeverStarts) {
+  onetip_sensor* s = makeSensor();
+  ASSERT_NE(s, nullptr);
+  onetip_error err;
+  ASSERT_EQ(onetip_sensor_stop(s, &err), ONETIP_OK) << err.message;
+  auto waiter = waitFinishedElsewhere(s);
+  ASSERT_EQ(waiter.wait_for(std::chrono::seconds(30)), std::future_status::ready) << "the waiter never returned";
+  EXPECT_EQ(waiter.get(), std::make_pair(int32_t{ONETIP_OK}, int32_t{0}));
+  EXPECT_EQ(onetip_sensor_start(s, &err), ONETIP_ERROR_STATE);
+  EXPECT_EQ(onetip_sensor_destroy(s, &err), ONETIP_OK) << err.message;
 }
 
 }  // namespace

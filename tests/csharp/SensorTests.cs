@@ -197,6 +197,22 @@ namespace Onetip.Tests
             Check.Throws<ObjectDisposedException>(sensor.Start, "a call after Dispose");
             SensorEvent ignored;
             Check.Throws<ObjectDisposedException>(() => sensor.PollEvent(out ignored), "a poll after Dispose");
+            WaitWithoutLimitEndsWhenAnotherThreadDisposes(work);
+        }
+
+        // Issue 39: WaitFinished(infinity) on a sensor never started never returned, even once another thread
+        // disposed the sensor (the wait held the handle, so its release waited for the wait).
+        static void WaitWithoutLimitEndsWhenAnotherThreadDisposes(string work)
+        {
+            var sensor = new Sensor("sim:" + Scenario(work, 0.1));
+            bool finished = true;
+            var waiter = new Thread(() => finished = sensor.WaitFinished(double.PositiveInfinity));
+            waiter.IsBackground = true;  // a waiter that never returns fails the check, not the process
+            waiter.Start();
+            Check.That(!waiter.Join(300), "nothing ends a sensor nobody started: the waiter waits");
+            sensor.Dispose();
+            Check.That(waiter.Join(30000), "the waiter returns once another thread disposes the sensor");
+            Check.That(!finished, "and says the sensor did not finish");
         }
 
         static void CallbacksThatThrow(string work)

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <signal.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -35,13 +36,16 @@ inline int exitCodeOf(int status) { return WIFEXITED(status) ? WEXITSTATUS(statu
 
 // Runs `onetip::test::cliPath() args` through /bin/sh (stdout discarded, stderr to err_file).
 // When `signal_when` is given, polls it every 20 ms and sends `sig` once it
-// returns true (then waits); gives up on signalling after 60 s.
+// returns true (then waits); gives up on signalling after 60 s. `in_child`
+// runs in the child before the program starts (e.g. to lower a limit).
 inline CliRun runCli(const std::string& args, const std::string& err_file,
-                     const std::function<bool()>& signal_when = {}, int sig = SIGINT) {
+                     const std::function<bool()>& signal_when = {}, int sig = SIGINT,
+                     const std::function<void()>& in_child = {}) {
   CliRun r;
   const std::string cmd = std::string("exec ") + onetip::test::cliPath() + " " + args + " >/dev/null 2>" + err_file;
   const pid_t pid = ::fork();
   if (pid == 0) {
+    if (in_child) in_child();
     ::execl("/bin/sh", "sh", "-c", cmd.c_str(), static_cast<char*>(nullptr));
     ::_exit(127);
   }
@@ -84,6 +88,15 @@ inline CliRun runCliWithOutput(const std::string& args, const std::string& out_f
   r.exit_code = exitCodeOf(status);
   r.err = readText(err_file);
   return r;
+}
+
+// For runCli's in_child: a full disk, as a file-size limit (writes past it fail with EFBIG; SIGXFSZ ignored).
+inline std::function<void()> fileSizeLimit(rlim_t bytes) {
+  return [bytes] {
+    ::signal(SIGXFSZ, SIG_IGN);
+    const rlimit limit{bytes, bytes};
+    ::setrlimit(RLIMIT_FSIZE, &limit);
+  };
 }
 
 // True when some entry of `dir` has a name containing `part`.

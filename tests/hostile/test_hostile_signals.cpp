@@ -85,13 +85,14 @@ TEST(HostileSignals, RecordKeepsTheFramesSoFarAsAReplayableSession) {
   const fs::path session = dir.path() / "session";
   int seen = 0;
   const CliRun run = runCli("record --input sim:" + kDemo + " --out " + session.string(), dir.file("err"),
-                            [&] { return anyEntryContains(dir.path(), "session.tmp.") && ++seen > 25; }, SIGINT);
+                            [&] { return anyEntryContains(dir.path(), "session.partial.") && ++seen > 25; }, SIGINT);
   ASSERT_TRUE(run.signalled) << run.err;
   EXPECT_EQ(run.exit_code, 130) << run.err;
   const CsvTable frames = readCsv((session / "session.csv").string());
   ASSERT_GE(frames.rows.size(), 1u);
   EXPECT_LT(frames.rows.size(), 121u);
   EXPECT_FALSE(anyEntryContains(dir.path(), ".tmp."));
+  EXPECT_FALSE(anyEntryContains(dir.path(), ".partial."));
   const CliRun replay = runCli("process --quiet --input " + session.string() + " --calib " +
                                    (session / "calib.yaml").string() + " --pattern " + (session / "pattern.yaml").string() +
                                    " --out " + dir.file("pose.csv"),

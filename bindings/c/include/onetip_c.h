@@ -496,7 +496,9 @@ ONETIP_C_API int32_t onetip_sensor_start(onetip_sensor* sensor, onetip_error* er
  * @brief Stops both threads and returns once the callbacks have finished.
  *
  * A source blocked in a read is abandoned after onetip_options::stop_timeout_ms.
- * Idempotent, a no-op before start; events and frames already queued stay pollable.
+ * Idempotent. Before start it ends a sensor that never ran: onetip_sensor_wait_finished
+ * returns (finished 0) in every thread and onetip_sensor_start is then refused;
+ * onetip_sensor_destroy does the same. Events and frames already queued stay pollable.
  * @param sensor the handle.
  * @param error NULL, or filled with the outcome.
  * @return ONETIP_OK; ONETIP_ERROR_NULL_ARGUMENT; ONETIP_ERROR_INVALID_HANDLE;
@@ -525,7 +527,9 @@ ONETIP_C_API int32_t onetip_sensor_is_finished(onetip_sensor* sensor, int32_t* o
  * finished, or a stop).
  * @param sensor the handle.
  * @param timeout_s seconds; < 0, INFINITY or >= 1e9 mean no limit (the same
- *        limits hold for onetip_sensor_wait_event).
+ *        limits hold for onetip_sensor_wait_event). On a sensor not started it
+ *        waits for another thread to start it and the run to end, or to stop or
+ *        destroy it.
  * @param finished receives 1 when the source finished, else 0 (set to 0 first).
  * @param error NULL, or filled with the outcome.
  * @return ONETIP_OK; ONETIP_ERROR_NULL_ARGUMENT (sensor, finished);

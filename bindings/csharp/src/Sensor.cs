@@ -50,7 +50,8 @@ namespace Onetip
 
         public void Start() { NativeError e; Errors.Check(NativeMethods.onetip_sensor_start(handle, out e), ref e); }
 
-        /// <summary>Stops both threads and returns once callbacks have finished; queued events stay pollable.</summary>
+        /// <summary>Stops both threads and returns once callbacks have finished; queued events stay pollable.
+        /// Before Start it ends a sensor that never ran: waiters return and Start then throws (kind State).</summary>
         public void Stop() { NativeError e; Errors.Check(NativeMethods.onetip_sensor_stop(handle, out e), ref e); }
 
         public bool IsRunning
@@ -155,11 +156,19 @@ namespace Onetip
             return SensorStats.From(ref native);
         }
 
-        /// <summary>Stops the sensor and frees it; later calls throw ObjectDisposedException.</summary>
+        /// <summary>Stops the sensor and frees it; later calls throw ObjectDisposedException. A WaitFinished
+        /// in another thread (even without limit, on a sensor never started) returns false.</summary>
         public void Dispose()
         {
             if (CallbackRouter.InsideCallback)
                 throw new OnetipException(ErrorKind.State, "Sensor.Dispose: not from inside one of its callbacks");
+            // A thread inside WaitFinished keeps the handle in use, so its release would wait for that thread:
+            // stop first, which ends every wait, then release.
+            try {
+                NativeError e;
+                if (!handle.IsClosed) NativeMethods.onetip_sensor_stop(handle, out e);
+            } catch (ObjectDisposedException) {  // disposed meanwhile by another thread
+            }
             handle.Dispose();
         }
 

@@ -155,8 +155,9 @@ class ONETIP_EXPORT Sensor {
    *
    * A source blocked inside a read is abandoned after
    * SensorOptions::stop_timeout_ms (SensorStats::source_abandoned; its thread
-   * ends on its own later). Idempotent, and a no-op before start(); events and
-   * results already queued stay pollable. Any thread but the sensor's own
+   * ends on its own later). Idempotent. Before start() it ends a sensor that
+   * never ran: waitFinished() returns (false) in every thread, and start()
+   * then throws. Events and results already queued stay pollable. Any thread but the sensor's own
    * callbacks; not concurrently with start().
    * @throws onetip::Error of kind ErrorKind::state when called from inside a
    *         callback of this sensor (it would wait for itself).
@@ -170,10 +171,11 @@ class ONETIP_EXPORT Sensor {
    * @brief Waits until the processing thread has ended (the source finished,
    * or stop()) or the timeout expires. Any thread; not from inside a callback
    * of this sensor (it would wait for the thread that runs it).
-   * @param timeout_s the longest wait, seconds; negative: no limit. Pass a
-   *        finite number or a negative one (NaN and infinities are not
-   *        supported). Before start() it waits for another thread to start
-   *        the sensor and the run to end.
+   * @param timeout_s the longest wait, seconds; negative, infinite or
+   *        >= 1e9: no limit. Before start() it waits for another thread to
+   *        start the sensor and the run to end, or to stop() it (also as the
+   *        destructor or onetip_sensor_destroy does).
+   * @throws onetip::Error of kind ErrorKind::input when timeout_s is NaN.
    * @return finished().
    */
   bool waitFinished(double timeout_s = -1) const;

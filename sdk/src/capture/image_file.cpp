@@ -3,6 +3,7 @@
 #include <png.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
@@ -248,9 +249,10 @@ std::optional<std::string> readFileBytes(const std::string& path, std::size_t ma
                                          std::vector<std::uint8_t>& bytes) {
   const std::string problem = inputFileProblem(path);  // a folder opens, and says it holds 2^63 - 1 bytes
   if (!problem.empty()) return problem;
+  errno = 0;
   std::ifstream in(path, std::ios::binary | std::ios::ate);
   const std::streamoff size = in ? static_cast<std::streamoff>(in.tellg()) : -1;
-  if (size < 0) return "cannot read the file";
+  if (size < 0) return errno != 0 ? std::string("cannot read the file (") + std::strerror(errno) + ")" : "cannot read the file";
   if (static_cast<std::uint64_t>(size) > max_bytes)
     return "file of " + std::to_string(size) + " bytes, over the " + std::to_string(max_bytes) +
            "-byte bound for one frame";

@@ -1,14 +1,9 @@
 #include "capture/session_source.hpp"
 
-#include <fcntl.h>
-#include <unistd.h>
-
-#include <cerrno>
 #include <cmath>
-#include <cstring>
-#include <cstdio>
 #include <filesystem>
-#include <opencv2/imgcodecs.hpp>
+#include <fstream>
+#include <sstream>
 
 #include "capture/image_file.hpp"
 #include "core/csv_table.hpp"
@@ -43,7 +38,16 @@ bool isSessionFolder(const std::string& folder) {
 
 SessionSource::SessionSource(const std::string& folder) : folder_(folder) {
   const std::string csv = (fs::path(folder) / "session.csv").string();
-  const CsvTable t = readCsv(csv);
+  std::string text;
+  {
+    std::ifstream in(csv, std::ios::binary);
+    if (!in) throw InputError(csv + ": cannot open");
+    std::stringstream all;
+    all << in.rdbuf();
+    text = all.str();
+  }
+  text.erase(text.find_last_of('\n') == std::string::npos ? 0 : text.find_last_of('\n') + 1);  // complete lines only
+  const CsvTable t = parseCsv(text, csv);
   if (t.header != kHeader) throw InputError(csv + ": line 1: the header must be frame,timestamp_s,file");
   if (t.rows.empty()) throw InputError(csv + ": no recorded frames");
   for (size_t r = 0; r < t.rows.size(); ++r) {
@@ -87,43 +91,6 @@ Frame SessionSource::next() {
   }
   if (!problem) problem = checker_.problem(grey);
   return deliver(std::move(f), std::move(grey), problem, e.file);
-}
-
-SessionWriter::SessionWriter(std::string folder) : folder_(std::move(folder)) {
-  std::error_code ec;
-  fs::create_directory(fs::path(folder_) / "frames", ec);
-  if (ec) throw InputError(folder_ + ": cannot create frames/ (" + ec.message() + ")");
-}
-
-void SessionWriter::add(const Frame& frame) {
-  char name[40];
-  std::snprintf(name, sizeof name, "frames/%06lld.%s", static_cast<long long>(frame.index),
-                frame.encoded.empty() ? "png" : "jpg");
-  std::vector<std::uint8_t> png;
-  if (frame.encoded.empty() && !cv::imencode(".png", frame.grey, png, {cv::IMWRITE_PNG_COMPRESSION, 1}))
-    throw InputError(folder_ + "/" + name + ": cannot encode the frame");
-  const std::vector<std::uint8_t>& bytes = frame.encoded.empty() ? png : frame.encoded;
-  // The session folder is itself staged (core/atomic_file.hpp AtomicDir): frames are written in place,
-  // created exclusively so nothing already there is followed or overwritten.
-  const std::string path = (fs::path(folder_) / name).string();
-  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
-  bool written = fd >= 0;
-  for (size_t done = 0; written && done < bytes.size();) {
-    const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
-    written = n > 0;
-    done += written ? static_cast<size_t>(n) : 0;
-  }
-  if (fd >= 0 && ::close(fd) != 0) written = false;
-  if (!written) throw InputError(path + ": cannot write the frame (" + std::strerror(errno) + ")");
-  char timestamp[40];
-  std::snprintf(timestamp, sizeof timestamp, "%.17g", frame.timestamp_s);  // round-trips the double exactly
-  rows_.push_back({std::to_string(frame.index), timestamp, name});
-}
-
-void SessionWriter::finish() {
-  CsvWriter csv((fs::path(folder_) / "session.csv").string(), kHeader);
-  for (const auto& row : rows_) csv.row(row);
-  csv.commit();
 }
 
 }  // namespace onetip::capture

@@ -2,7 +2,8 @@
 // source, and the writer that records them.
 //
 // A session folder holds
-//   session.csv   frame,timestamp_s,file — one row per recorded frame: the
+//   session.csv   frame,timestamp_s,file — one row per recorded frame, written
+//                 as soon as the frame is (capture/session_writer.hpp): the
 //                 frame's index in the live stream (gaps where the live
 //                 source skipped one), its timestamp (s, as the live source
 //                 stamped it) and its file under frames/;
@@ -52,21 +53,6 @@ class SessionSource : public FrameSource {
   std::size_t position_ = 0;
   FrameChecker checker_;
   JpegGreyDecoder jpeg_;
-};
-
-// Writes a session into `folder` (which must exist, normally an AtomicDir's
-// staging folder): frames as they come, session.csv at finish().
-class SessionWriter {
- public:
-  explicit SessionWriter(std::string folder);
-  // Records an ok frame: its encoded bytes when it has them, else lossless PNG of its grey image.
-  void add(const Frame& frame);
-  void finish();  // writes session.csv; throws InputError on I/O failure
-  std::size_t frames() const noexcept { return rows_.size(); }
-
- private:
-  std::string folder_;
-  std::vector<std::vector<std::string>> rows_;
 };
 
 }  // namespace onetip::capture

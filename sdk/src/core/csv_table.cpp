@@ -62,8 +62,15 @@ std::vector<std::string> splitLine(const std::string& line) {
 
 CsvTable readCsv(const std::string& path) {
   requireInputFile(path);
-  std::ifstream in(path);
+  std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path + ": cannot open");
+  std::stringstream text;
+  text << in.rdbuf();
+  return parseCsv(text.str(), path);
+}
+
+CsvTable parseCsv(const std::string& text, const std::string& where) {
+  std::istringstream in(text);
   CsvTable t;
   std::string line;
   size_t line_no = 0;
@@ -77,12 +84,12 @@ CsvTable readCsv(const std::string& path) {
       continue;
     }
     if (cells.size() != t.header.size())
-      throw InputError(path + ": line " + std::to_string(line_no) + ": expected " +
+      throw InputError(where + ": line " + std::to_string(line_no) + ": expected " +
                        std::to_string(t.header.size()) + " cells, found " +
                        std::to_string(cells.size()));
     t.rows.push_back(std::move(cells));
   }
-  if (t.header.empty()) throw InputError(path + ": empty file (no header line)");
+  if (t.header.empty()) throw InputError(where + ": empty file (no header line)");
   return t;
 }
 

@@ -20,6 +20,9 @@ class CsvWriter {
   // from the header.
   void row(const std::vector<std::string>& cells);
   void commit() { file_.commit(); }
+  void flush() { file_.flush(); }      // AtomicFile::flush: a write error now, naming its cause
+  void commitFlushed() { file_.commitFlushed(); }
+  void discard() { file_.discard(); }  // AtomicFile::discard
   const std::string& path() const { return file_.path(); }
 
  private:
@@ -40,6 +43,8 @@ struct CsvTable {
 // Reads a comma-separated file with a header line; throws InputError on a
 // missing file or a row whose cell count differs from the header's.
 CsvTable readCsv(const std::string& path);
+// The same for text already read; `where` names it in messages.
+CsvTable parseCsv(const std::string& text, const std::string& where);
 
 // Parses a cell as a finite double; throws InputError naming where.
 double parseNumber(const std::string& cell, const std::string& where);

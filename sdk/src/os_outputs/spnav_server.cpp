@@ -17,6 +17,7 @@
 
 #include "core/error.hpp"
 #include "core/option_checks.hpp"
+#include "os_outputs/descriptor_budget.hpp"
 #include "os_outputs/output_intent.hpp"
 #include "os_outputs/spnav_protocol.hpp"
 #include "os_outputs/unix_listener.hpp"
@@ -79,6 +80,8 @@ struct SpnavServer::State {
   std::vector<std::unique_ptr<Client>> clients;  // changed by the I/O thread, under mutex
   OutputTracker tracker;                         // under mutex
   SpnavServerStats stats;                        // under mutex
+  SpareDescriptor spare;                         // I/O thread: for EMFILE (descriptor_budget.hpp)
+  Clock::time_point listener_rests_until{};      // I/O thread: out of descriptors and no spare
 
   void wake() const noexcept {
     const std::uint64_t one = 1;
@@ -115,6 +118,14 @@ bool SpnavServer::State::hasOutput(Client& c) {
 void SpnavServer::State::acceptClients() {
   for (;;) {
     const int fd = ::accept4(listener.fd(), nullptr, nullptr, SOCK_NONBLOCK | SOCK_CLOEXEC);
+    if (fd < 0 && (errno == EMFILE || errno == ENFILE)) {  // out of descriptors: shed the client, never spin
+      if (spare.shedOne(listener.fd())) {
+        std::lock_guard lock(mutex);
+        ++stats.shed;
+        continue;
+      }
+      listener_rests_until = Clock::now() + std::chrono::milliseconds(100);
+    }
     if (fd < 0) return;  // EAGAIN: none left (other errors: try again on the next wake-up)
     const auto now = Clock::now();
     std::lock_guard lock(mutex);
@@ -231,13 +242,16 @@ void SpnavServer::State::run() {
   while (!stopping.load()) {
     fds.clear();
     fds.push_back({wake_fd, POLLIN, 0});
-    fds.push_back({listener.fd(), POLLIN, 0});
+    const auto rest_left = std::chrono::ceil<std::chrono::milliseconds>(listener_rests_until - Clock::now()).count();
+    fds.push_back({rest_left > 0 ? -1 : listener.fd(), POLLIN, 0});  // a negative descriptor is not polled
     for (auto& c : clients) {
       short events = c->staging.size() - c->staged_sent < kMaxStagedBytes ? POLLIN : 0;
       if (hasOutput(*c)) events |= POLLOUT;
       fds.push_back({c->fd, events, 0});
     }
-    if (::poll(fds.data(), fds.size(), pollTimeoutMs(Clock::now())) < 0 && errno != EINTR) break;
+    int timeout = pollTimeoutMs(Clock::now());
+    if (rest_left > 0) timeout = timeout < 0 ? static_cast<int>(rest_left) : std::min(timeout, static_cast<int>(rest_left));
+    if (::poll(fds.data(), fds.size(), timeout) < 0 && errno != EINTR) break;
     if (fds[0].revents & POLLIN) {
       std::uint64_t count = 0;
       [[maybe_unused]] const auto n = ::read(wake_fd, &count, sizeof(count));
@@ -267,6 +281,7 @@ bool SpnavServer::running() const noexcept { return state_ != nullptr; }
 void SpnavServer::start() {
   if (state_) return;
   options_.validate();
+  reserveDescriptorsFor(options_.max_clients, "spnav options: max_clients");
   auto state = std::make_unique<State>(options_);
   state->listener = UnixListener::listenAt(options_.socket_path, kBacklog);
   state->wake_fd = ::eventfd(0, EFD_NONBLOCK | EFD_CLOEXEC);

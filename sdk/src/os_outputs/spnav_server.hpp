@@ -50,7 +50,7 @@ struct SpnavServerOptions {
   std::string socket_path;        // required; created 0600 (unix_listener.hpp)
   WorkingRange range;             // the 6-D values that map to ±full_scale
   double full_scale = 350;        // spnav units at the end of the range, (0, 1e6]
-  int max_clients = 16;           // 1..1024
+  int max_clients = 16;           // 1..1024, and within the open-file limit (descriptor_budget.hpp)
   int max_queued_events = 256;    // per client, 1..65536
   int hello_timeout_ms = 500;     // 0..10000
   int idle_timeout_ms = 10000;    // 100..3600000: idle clients are evicted after this
@@ -63,6 +63,7 @@ struct SpnavServerStats {
   int clients = 0;                      // connected now
   std::uint64_t accepted = 0;           // connections accepted in total
   std::uint64_t refused = 0;            // closed at once: over max_clients, none idle
+  std::uint64_t shed = 0;               // closed at once: the process was out of open files (EMFILE)
   std::uint64_t idle_evictions = 0;     // disconnected after idle_timeout_ms (stalled, or for a new client)
   std::uint64_t garbage_disconnects = 0;
   std::uint64_t hangups = 0;            // clients that closed or failed

@@ -3,6 +3,7 @@
 #include <cerrno>
 #include <cstring>
 #include <fcntl.h>
+#include <sys/file.h>
 #include <sys/socket.h>
 #include <sys/stat.h>
 #include <sys/un.h>
@@ -57,6 +58,33 @@ void checkExisting(const std::string& path) {
   if (socketIsLive(path)) throw InputError(quoted(path) + ": another server is listening there");
 }
 
+// Takes the lock file "<path>.lock" beside the socket (flock, held while the
+// listener lives): of two servers started together on one path, one gets it and
+// the other is refused before either looks at the socket. The file is unlinked
+// by its holder on close; a holder whose file was unlinked and replaced between
+// open and flock retries on the new one, so two never hold "the" lock at once.
+int lockBeside(const std::string& path, struct stat& locked) {
+  const std::string lock = path + ".lock";
+  for (int attempt = 0; attempt < 100; ++attempt) {
+    const int fd = ::open(lock.c_str(), O_RDWR | O_CREAT | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC, 0600);
+    if (fd < 0) throw InputError(quoted(path) + ": cannot open its lock file '" + lock + "': " + errnoText(errno));
+    struct stat now {};
+    if (::fstat(fd, &locked) != 0 || !S_ISREG(locked.st_mode)) {
+      ::close(fd);
+      throw InputError(quoted(path) + ": its lock file '" + lock + "' is not a regular file; refusing to use it");
+    }
+    if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
+      const int err = errno;
+      ::close(fd);
+      if (err == EWOULDBLOCK) throw InputError(quoted(path) + ": another server is listening there or starting (it holds '" + lock + "')");
+      throw InputError(quoted(path) + ": cannot lock '" + lock + "': " + errnoText(err));
+    }
+    if (::lstat(lock.c_str(), &now) == 0 && now.st_dev == locked.st_dev && now.st_ino == locked.st_ino) return fd;
+    ::close(fd);  // unlinked by its previous holder meanwhile: lock the file now at that name
+  }
+  throw InputError(quoted(path) + ": its lock file '" + lock + "' keeps being replaced");
+}
+
 // Removes the temporary directory and everything we put in it.
 struct TempDir {
   std::string dir, socket;
@@ -79,6 +107,9 @@ UnixListener& UnixListener::operator=(UnixListener&& other) noexcept {
     path_ = std::move(other.path_);
     device_ = other.device_;
     inode_ = other.inode_;
+    lock_fd_ = std::exchange(other.lock_fd_, -1);
+    lock_device_ = other.lock_device_;
+    lock_inode_ = other.lock_inode_;
   }
   return *this;
 }
@@ -94,6 +125,12 @@ UnixListener UnixListener::listenAt(const std::string& path, int backlog) {
   if (::stat(dir.c_str(), &dst) != 0 || !S_ISDIR(dst.st_mode)) {
     throw InputError(quoted(path) + ": directory '" + dir + "' does not exist");
   }
+  UnixListener out;
+  struct stat locked {};
+  out.lock_fd_ = lockBeside(path, locked);
+  out.path_ = path;
+  out.lock_device_ = locked.st_dev;
+  out.lock_inode_ = locked.st_ino;
   checkExisting(path);
 
   TempDir temp;
@@ -108,7 +145,6 @@ UnixListener UnixListener::listenAt(const std::string& path, int backlog) {
     throw InputError(quoted(path) + ": directory '" + dir + "' is too long for the temporary socket beside it");
   }
 
-  UnixListener out;
   out.fd_ = ::socket(AF_UNIX, SOCK_STREAM | SOCK_NONBLOCK | SOCK_CLOEXEC, 0);
   if (out.fd_ < 0) throw InputError(quoted(path) + ": socket(): " + errnoText(errno));
   if (::bind(out.fd_, reinterpret_cast<const sockaddr*>(&staging_addr), sizeof(staging_addr)) != 0) {
@@ -133,12 +169,18 @@ UnixListener UnixListener::listenAt(const std::string& path, int backlog) {
 }
 
 void UnixListener::close() noexcept {
-  if (fd_ < 0) return;
-  ::close(fd_);
-  fd_ = -1;
   struct stat st {};
-  if (::lstat(path_.c_str(), &st) == 0 && S_ISSOCK(st.st_mode) && st.st_dev == device_ && st.st_ino == inode_) {
-    ::unlink(path_.c_str());
+  if (fd_ >= 0) {
+    ::close(fd_);
+    fd_ = -1;
+    if (::lstat(path_.c_str(), &st) == 0 && S_ISSOCK(st.st_mode) && st.st_dev == device_ && st.st_ino == inode_)
+      ::unlink(path_.c_str());
+  }
+  if (lock_fd_ >= 0) {  // unlinked while still held: the next server locks a fresh file
+    const std::string lock = path_ + ".lock";
+    if (::lstat(lock.c_str(), &st) == 0 && st.st_dev == lock_device_ && st.st_ino == lock_inode_) ::unlink(lock.c_str());
+    ::close(lock_fd_);
+    lock_fd_ = -1;
   }
 }
 

@@ -3,6 +3,9 @@
 //
 // Creation is safe against races and against deleting what is not ours:
 //   - the path must fit sockaddr_un (at most 107 bytes) and its directory exist;
+//   - "<path>.lock" beside it is flock-ed for the listener's life (and removed
+//     on close): a second server on the same path is refused even when both
+//     start together, before either has a socket to probe;
 //   - if something already exists at the path: a non-socket (file, directory,
 //     symlink, ...) is never touched (InputError); a socket that still accepts
 //     connections belongs to a live server (InputError); a socket that refuses
@@ -42,6 +45,9 @@ class UnixListener {
   std::string path_;
   dev_t device_ = 0;
   ino_t inode_ = 0;
+  int lock_fd_ = -1;
+  dev_t lock_device_ = 0;
+  ino_t lock_inode_ = 0;
 };
 
 }  // namespace onetip::os_outputs

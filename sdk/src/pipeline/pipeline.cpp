@@ -1,5 +1,6 @@
 #include "pipeline/pipeline.hpp"
 
+#include <cmath>
 #include <condition_variable>
 #include <mutex>
 #include <thread>
@@ -227,7 +228,7 @@ void Pipeline::start() {
   Processing& p = *processing_;
   if (p.onProcessingThread()) throw PipelineStateError("pipeline: start() from inside a callback");
   std::lock_guard lock(p.state_mutex);
-  if (p.started) throw PipelineStateError("pipeline: already started (a pipeline runs once)");
+  if (p.started || p.stopped) throw PipelineStateError("pipeline: already started or stopped (a pipeline runs once)");
   p.started = true;
   std::shared_ptr<Shared> shared = shared_;
   p.processing_thread = std::thread([&p, shared] { p.loop(*shared); });
@@ -238,8 +239,14 @@ void Pipeline::stop() {
   Processing& p = *processing_;
   if (p.onProcessingThread()) throw PipelineStateError("pipeline: stop() from inside a callback");
   std::lock_guard lock(p.state_mutex);
-  if (!p.started || p.stopped) return;
+  if (p.stopped) return;
   p.stopped = true;
+  if (!p.started) {  // it never ran and now never will: whoever waits for its end is released
+    std::lock_guard end_lock(p.end_mutex);
+    p.ended = true;
+    p.end_cv.notify_all();
+    return;
+  }
   shared_->requestStop();
   {
     std::unique_lock exit_lock(shared_->mutex);
@@ -265,8 +272,9 @@ bool Pipeline::finished() const noexcept { return processing_->finished; }
 bool Pipeline::waitFinished(double timeout_s) const {
   Processing& p = *processing_;
   std::unique_lock lock(p.end_mutex);
+  if (std::isnan(timeout_s)) throw InputError("waitFinished: timeout_s is NaN");
   const auto done = [&] { return p.ended; };
-  if (timeout_s < 0)
+  if (timeout_s < 0 || timeout_s >= kNoTimeLimitS)  // no limit (infinities too: never converted to a clock)
     p.end_cv.wait(lock, done);
   else
     p.end_cv.wait_for(lock, std::chrono::duration<double>(timeout_s), done);
@@ -294,6 +302,7 @@ PipelineStats Pipeline::stats() const {
   s.frames_processed = p.processed;
   s.frames_dropped = shared_->frames.dropped();
   s.frames_skipped = shared_->skipped + p.skipped;
+  s.frames_unreadable = shared_->skipped;
   s.frames_lost = p.lost;
   s.source_errors = shared_->source_errors;
   s.events_emitted = p.emitted;

@@ -83,6 +83,7 @@ struct PipelineStats {
   std::int64_t frames_captured = 0, frames_processed = 0, frames_dropped = 0, frames_skipped = 0,
                frames_lost = 0, source_errors = 0, events_emitted = 0, events_dropped = 0,
                frame_results_dropped = 0, callback_errors = 0;
+  std::int64_t frames_unreadable = 0;  // of frames_skipped: skipped by the source (unreadable, malformed)
   bool source_abandoned = false;
   std::vector<StageSummary> stages;  // capture, queue, detect, track, triangulate, contact, pose, process, delivery
 };
@@ -112,11 +113,14 @@ class Pipeline {
   void onEvent(EventCallback callback);
   void onFrame(FrameCallback callback);
 
+  static constexpr double kNoTimeLimitS = 1e9;
+
   void start();
   void stop();
   bool running() const noexcept;
   bool finished() const noexcept;
-  // Until the processing thread has ended (finished or stopped) or the timeout (< 0: none); returns finished().
+  // Until the processing thread has ended (finished or stopped; stop() before start() ends a pipeline that
+  // then never runs) or the timeout (< 0, infinite or >= kNoTimeLimitS: none; NaN: InputError); returns finished().
   bool waitFinished(double timeout_s) const;
 
   bool pollEvent(PipelineEvent& out);

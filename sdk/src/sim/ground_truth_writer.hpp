@@ -4,11 +4,12 @@
 //   DIR/gt_pose.csv     frame,contact,state,dx,dy,dz,yaw,pitch,roll
 //   DIR/gt_markers.csv  frame,id,x,y,z,contact,slip      (S, mm)
 //   DIR/calib.yaml, DIR/pattern.yaml
-// Everything is written into a fresh DIR.tmp.<pid>.<random> (mkdtemp) and
-// renamed to DIR at the end, so a failed or interrupted run (an exception from
-// on_frame unwinds) leaves no partial output. DIR must be absent or an empty
-// folder: nothing the run did not create is ever deleted or replaced. Staging
-// folders of killed runs are removed (core/atomic_file.hpp).
+// Everything is written into a fresh DIR.tmp.<owner>.<random> (AtomicDir,
+// core/atomic_file.hpp) and renamed to DIR at the end, so a failed or
+// interrupted run (an exception from on_frame unwinds) leaves no partial
+// output. DIR must be absent or an empty folder: nothing the run did not create
+// is ever deleted or replaced. Staging folders of killed runs are removed only
+// when provably abandoned (core/staging_owner.hpp).
 #pragma once
 
 #include <functional>

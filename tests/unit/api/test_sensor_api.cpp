@@ -5,6 +5,7 @@
 // bad input and wrong call order give onetip::Error of the right kind.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -176,6 +177,15 @@ TEST(SensorApi, BadInputAndWrongCallOrderGiveErrorsOfTheRightKind) {
   sensor.stop();
   sensor.stop();  // idempotent
   EXPECT_EQ(kindOf([&] { sensor.start(); }), static_cast<int>(ErrorKind::state));  // runs once
+  // Issue 39: NaN is refused; an infinite or huge limit is no limit, never converted to a clock (UB).
+  EXPECT_EQ(kindOf([&] { sensor.waitFinished(std::nan("")); }), static_cast<int>(ErrorKind::input));
+  EXPECT_FALSE(sensor.waitFinished(HUGE_VAL));  // stopped, not finished: returns at once
+  EXPECT_FALSE(sensor.waitFinished(1e300));
+
+  Sensor never_started(onetip::SensorConfig("sim:" + kScenario, "", "", ""));
+  never_started.stop();  // it never ran and never will: waiters return, start() is refused
+  EXPECT_FALSE(never_started.waitFinished(-1));
+  EXPECT_EQ(kindOf([&] { never_started.start(); }), static_cast<int>(ErrorKind::state));
 }
 
 TEST(SensorApi, JoystickAndSpnavScalingFollowTheDocumentedFormulas) {

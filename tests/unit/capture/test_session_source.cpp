@@ -9,6 +9,7 @@
 
 #include "capture/open_frame_source.hpp"
 #include "capture/session_source.hpp"
+#include "capture/session_writer.hpp"
 #include "input_error_of.hpp"
 #include "scratch_dir.hpp"
 

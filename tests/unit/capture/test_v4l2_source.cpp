@@ -10,6 +10,7 @@
 
 #include "capture/v4l2_format.hpp"
 #include "capture/session_source.hpp"
+#include "capture/session_writer.hpp"
 #include "capture/v4l2_source.hpp"
 #include "core/error.hpp"
 #include "fake_v4l2_device.hpp"

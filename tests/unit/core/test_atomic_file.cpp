@@ -1,17 +1,20 @@
 // AtomicFile against hostile targets (core/atomic_file.hpp): a device, a
 // folder or a FIFO is refused; a planted symlink at the old staging name, or
-// as the target, never gets its pointee written; staging files of killed runs
-// are removed and nothing else is.
+// as the target, never gets its pointee written. (Which staging of killed runs
+// is removed: test_staging_owner.cpp.)
 #include <gtest/gtest.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
 #include "core/atomic_file.hpp"
+#include "core/error.hpp"
 #include "input_error_of.hpp"
 #include "scratch_dir.hpp"
 
@@ -32,14 +35,6 @@ void writeAtomically(const std::string& path, const std::string& text) {
   AtomicFile f(path);
   f.stream() << text;
   f.commit();
-}
-
-// A pid that was used and whose process is gone (reaped).
-pid_t deadPid() {
-  const pid_t pid = ::fork();
-  if (pid == 0) ::_exit(0);
-  ::waitpid(pid, nullptr, 0);
-  return pid;
 }
 
 TEST(AtomicFile, RefusesDevicesFoldersAndFifos) {
@@ -90,27 +85,6 @@ TEST(AtomicFile, WithoutCommitNothingIsLeftAndTheTargetIsUntouched) {
   EXPECT_EQ(entries, 1u);
 }
 
-TEST(AtomicFile, StagingOfKilledRunsIsRemovedAndNothingElse) {
-  const test_support::ScratchDir dir("onetip-atomic");
-  const std::string target = dir.file("pose.csv");
-  const std::string dead = std::to_string(deadPid());
-  const std::string alive = std::to_string(::getppid());
-  for (const std::string& name : {target + ".tmp." + dead, target + ".tmp." + dead + ".Ab12Cd", target + ".tmp." + alive + ".x",
-                                  target + ".tmpfoo", target + ".tmp.notapid", dir.file("other.csv.tmp." + dead)})
-    std::ofstream(name) << "x";
-  fs::create_directory(target + ".tmp." + dead + ".dir");
-  std::ofstream(target + ".tmp." + dead + ".dir/inner") << "x";
-  writeAtomically(target, "a\n");
-  EXPECT_FALSE(fs::exists(target + ".tmp." + dead));
-  EXPECT_FALSE(fs::exists(target + ".tmp." + dead + ".Ab12Cd"));
-  EXPECT_FALSE(fs::exists(target + ".tmp." + dead + ".dir"));
-  EXPECT_TRUE(fs::exists(target + ".tmp." + alive + ".x"));  // a live process's staging file
-  EXPECT_TRUE(fs::exists(target + ".tmpfoo"));
-  EXPECT_TRUE(fs::exists(target + ".tmp.notapid"));
-  EXPECT_TRUE(fs::exists(dir.file("other.csv.tmp." + dead)));  // another target's
-  EXPECT_EQ(readAll(target), "a\n");
-}
-
 TEST(AtomicFile, CommittedFileHasTheUmasksRegularMode) {
   const test_support::ScratchDir dir("onetip-atomic");
   const mode_t old = ::umask(022);
@@ -119,6 +93,61 @@ TEST(AtomicFile, CommittedFileHasTheUmasksRegularMode) {
   struct stat st {};
   ASSERT_EQ(::stat(dir.file("m.csv").c_str(), &st), 0);
   EXPECT_EQ(st.st_mode & 0777, 0644u);
+}
+
+// Issue 39: a write error is known at the record that met it, with its cause;
+// what was flushed whole can be kept, and a record refused for want of space is
+// written again once there is room. Run in a child under a file-size limit.
+TEST(AtomicFile, AFailedFlushNamesItsCauseKeepsWholeRecordsAndRetries) {
+  const test_support::ScratchDir dir("onetip-atomic");
+  const std::string kept = dir.file("kept.csv"), retried = dir.file("retried.csv");
+  const pid_t child = ::fork();
+  if (child == 0) {
+    ::signal(SIGXFSZ, SIG_IGN);
+    rlimit limit{};
+    ::getrlimit(RLIMIT_FSIZE, &limit);
+    limit.rlim_cur = 100;
+    ::setrlimit(RLIMIT_FSIZE, &limit);
+    int code = 0;
+    {
+      AtomicFile f(kept);  // records of 30 bytes: the fourth does not fit
+      std::string message;
+      for (int i = 0; i < 10 && message.empty(); ++i) {
+        f.stream() << std::string(29, static_cast<char>('a' + i)) << '\n';
+        try {
+          f.flush();
+        } catch (const InputError& e) {
+          message = e.what();
+        }
+      }
+      if (message.find("File too large") == std::string::npos) code |= 1;
+      f.commitFlushed();
+    }
+    {
+      AtomicFile f(retried);
+      f.stream() << std::string(80, 'x') << '\n';
+      f.flush();
+      f.stream() << std::string(29, 'y') << '\n';  // still wholly in the buffer when refused
+      try {
+        f.flush();
+        code |= 2;
+      } catch (const InputError&) {
+      }
+      limit.rlim_cur = limit.rlim_max;  // room again
+      ::setrlimit(RLIMIT_FSIZE, &limit);
+      f.flush();
+      f.commit();
+    }
+    ::_exit(code);
+  }
+  int status = 0;
+  ASSERT_EQ(::waitpid(child, &status, 0), child);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 0);
+  EXPECT_EQ(readAll(kept), std::string(29, 'a') + "\n" + std::string(29, 'b') + "\n" + std::string(29, 'c') + "\n");
+  EXPECT_EQ(readAll(retried), std::string(80, 'x') + "\n" + std::string(29, 'y') + "\n");
+  for (const auto& e : fs::directory_iterator(dir.path()))
+    EXPECT_EQ(e.path().filename().string().find(".tmp."), std::string::npos) << e.path();
 }
 
 }  // namespace

@@ -2,7 +2,12 @@
 // sockets replaced, live sockets and non-sockets refused, clear errors.
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cstdlib>
+#include <fcntl.h>
+#include <sys/file.h>
+#include <thread>
+#include <vector>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -57,10 +62,12 @@ TEST_F(UnixListenerTest, SocketIsOwnerOnlyEvenWithAnOpenUmask) {
   EXPECT_TRUE(S_ISSOCK(st.st_mode));
   EXPECT_EQ(st.st_mode & 0777, 0600u);
   EXPECT_TRUE(canConnect(path_));
-  // Nothing but the socket is left in the directory (no temporary leftovers).
-  EXPECT_EQ(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()), 1);
+  // Nothing but the socket and its lock file is in the directory (no temporary leftovers).
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()), 2);
+  EXPECT_TRUE(fs::is_regular_file(path_ + ".lock"));
   l.close();
   EXPECT_FALSE(fs::exists(fs::symlink_status(path_)));
+  EXPECT_FALSE(fs::exists(fs::symlink_status(path_ + ".lock")));
 }
 
 TEST_F(UnixListenerTest, StaleSocketIsReplaced) {
@@ -83,6 +90,42 @@ TEST_F(UnixListenerTest, LiveSocketIsRefusedAndKeepsWorking) {
   EXPECT_NE(err.find(path_), std::string::npos) << err;
   EXPECT_NE(err.find("another server"), std::string::npos) << err;
   EXPECT_TRUE(canConnect(path_));
+}
+
+// Issue 39: two servers started together could both pass the probe for a live
+// socket (nothing listens yet) and both run, one serving nobody. A server that
+// is starting holds the lock beside the path: the other is refused.
+TEST_F(UnixListenerTest, AServerStillStartingHoldsThePathAgainstASecond) {
+  const int starting = ::open((path_ + ".lock").c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0600);
+  ASSERT_GE(starting, 0);
+  ASSERT_EQ(::flock(starting, LOCK_EX | LOCK_NB), 0);
+  const std::string err = errorOf(path_);
+  EXPECT_NE(err.find("another server"), std::string::npos) << err;
+  EXPECT_FALSE(fs::exists(fs::symlink_status(path_)));  // no socket was made
+  ::close(starting);  // it went away without a socket: the path is free again
+  UnixListener l = UnixListener::listenAt(path_, 4);
+  EXPECT_TRUE(canConnect(path_));
+}
+
+TEST_F(UnixListenerTest, OfTwoServersStartedTogetherOneRuns) {
+  for (int trial = 0; trial < 20; ++trial) {
+    std::atomic<bool> go{false};
+    std::atomic<int> listening{0};
+    std::vector<UnixListener> kept(2);
+    std::vector<std::thread> servers;
+    for (int i = 0; i < 2; ++i)
+      servers.emplace_back([&, i] {
+        while (!go) std::this_thread::yield();
+        try {
+          kept[static_cast<size_t>(i)] = UnixListener::listenAt(path_, 4);
+          ++listening;
+        } catch (const InputError&) {
+        }
+      });
+    go = true;
+    for (auto& t : servers) t.join();
+    EXPECT_EQ(listening.load(), 1) << "trial " << trial;
+  }
 }
 
 TEST_F(UnixListenerTest, NonSocketIsNeverReplaced) {
