@@ -49,13 +49,17 @@ bool RestKeeper::alignWholeField(const MarkerField& now, double noise_mm, double
   if (largest <= bound) return false;  // nothing moved beyond the noise: drift following is enough
   const pose::RigidFit g = pose::fitRigidMotionRobust(from, to, contact_threshold_mm / 4, 3);
   if (!g.ok) return false;
+  const double explained = contact_threshold_mm / 2;
+  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
   double moved = 0;
   for (size_t i = 0; i < from.size(); ++i) {
-    if ((g.motion * from[i] - to[i]).norm() > bound) return false;  // not one rigid shift: a touch, or noise
-    const Eigen::Vector3d shift = g.motion * from[i] - from[i];
-    if (std::abs(shift.z()) > bound) return false;  // along the normal: a plate over the whole pattern looks so
-    moved = std::max(moved, shift.norm());
+    if ((g.motion * from[i] - to[i]).norm() > explained) return false;  // a touch: its dimple is left over
+    moved = std::max(moved, (g.motion * from[i] - from[i]).norm());
+    centroid += from[i];
   }
+  centroid /= static_cast<double>(from.size());
+  // Into or out of the pad at the field's centre: a flat plate pressed over the whole pattern looks so.
+  if (std::abs((g.motion * centroid - centroid).z()) > bound) return false;
   for (size_t i = 0; i < rest_.position.size(); ++i)
     if (rest_.valid[i]) rest_.position[i] = g.motion * rest_.position[i];
   out.moved = moved >= options_.move_report_mm;

@@ -11,15 +11,17 @@
 //    contact threshold / 4, pose/rigid_fit.hpp). A finger is local: it
 //    leaves markers far from it where they were, so G stays near the
 //    identity and its residual holds the dimple. A moved camera is global:
-//    G carries every marker to within the noise. G is taken for a move of
-//    the sensor when it displaces some marker by more than move_sigmas
-//    sigma and explains every marker to within move_sigmas sigma, and moves
-//    none along S.z by more than that (a flat plate pressed over the whole
-//    pattern moves every marker rigidly into the pad: only an in-plane shift
-//    and a turn about S.z are taken for the sensor's own move); the rest
-//    becomes G r and, when the largest displacement reaches
-//    move_report_mm, the caller is told (an event). The contact analysis
-//    then sees only what a finger did.
+//    G carries every marker close to where it is (a shifted principal point
+//    is not exactly a rigid motion in S: a 3 px step reads as 0.1 mm and
+//    0.3 deg with 0.02 mm left over). When some marker moved by more than
+//    move_sigmas sigma, G is taken for a move of the sensor if it explains
+//    every marker to within half the contact threshold (what is left then
+//    never reads as a touch) and does not move the field's centre along S.z
+//    by more than move_sigmas sigma (a flat plate pressed over the whole
+//    pattern moves every marker rigidly into the pad). The rest becomes
+//    G r and, when the largest displacement reaches move_report_mm, the
+//    caller is told (an event). A finger's G is near the identity, so the
+//    rest barely moves. The contact analysis then sees only what a finger did.
 //  - slow drift: each marker with |e_i| below drift_sigmas sigma moves its
 //    rest towards p_i by dt / drift_time_s of e_i (an exponential average
 //    with that time constant). Noise moves it by sigma sqrt(dt / 2 tau), a
