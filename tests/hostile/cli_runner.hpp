@@ -8,6 +8,9 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <gtest/gtest.h>
+
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -88,6 +91,13 @@ inline CliRun runCliWithOutput(const std::string& args, const std::string& out_f
   r.exit_code = exitCodeOf(status);
   r.err = readText(err_file);
   return r;
+}
+
+// A refusal as the command-line contract wants it: exit status 2 and one line on stderr that mentions `mentions`.
+inline void expectRefused(const CliRun& r, const std::string& mentions) {
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find(mentions), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << "one line: " << r.err;
 }
 
 // For runCli's in_child: a full disk, as a file-size limit (writes past it fail with EFBIG; SIGXFSZ ignored).

@@ -26,12 +26,6 @@ namespace fs = std::filesystem;
 const fs::path kSource(onetip::test::sourceDir());
 const std::string kPress = (kSource / "samples/scenarios/press.yaml").string();
 
-void expectRefused(const CliRun& r, const std::string& mentions) {
-  EXPECT_EQ(r.exit_code, 2) << r.err;
-  EXPECT_NE(r.err.find(mentions), std::string::npos) << r.err;
-  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << "one line: " << r.err;
-}
-
 std::vector<std::string> frameColumn(const std::string& csv) {
   std::vector<std::string> frames;
   for (const auto& row : readCsv(csv).rows) frames.push_back(row[0]);
