@@ -84,8 +84,9 @@ TEST_F(HostileFiles, AFrameClaiming40000x40000PixelsIsACountedSkip) {
 
 // Issue 39: a source whose frames are mostly unreadable (a folder source out of
 // descriptors skipped 3,394 of 3,600) "ended" with exit 0 and a summary that
-// left the skipped frames out. Every command that runs a source now exits 1.
-TEST_F(HostileFiles, MostlyUnreadableFramesEndWithExitOneInEveryCommand) {
+// left the skipped frames out. Every command that runs a source now fails: `process` as on bad input (exit 2,
+// nothing written: a pose.csv with a few of the frames reads like a short recording), the live outputs with exit 1.
+TEST_F(HostileFiles, MostlyUnreadableFramesFailInEveryCommand) {
   const ScratchDir dir("onetip-hostile-unreadable");
   const fs::path frames = dir.path() / "frames";
   fs::create_directory(frames);
@@ -95,9 +96,9 @@ TEST_F(HostileFiles, MostlyUnreadableFramesEndWithExitOneInEveryCommand) {
     fs::copy_file(kCorpus / "not_an_image.png", frames / junk);
   const std::string rig = " --calib " + calib() + " --pattern " + pattern() + " --input " + frames.string();
   const CliRun p = runCli("process --quiet" + rig + " --out " + dir.file("pose.csv"), err());
-  EXPECT_EQ(p.exit_code, 1) << p.err;
-  EXPECT_NE(p.err.find("3 of 5 frames were unreadable"), std::string::npos) << p.err;
-  EXPECT_EQ(readCsv(dir.file("pose.csv")).rows.size(), 2u);  // the readable frames are kept
+  EXPECT_EQ(p.exit_code, 2) << p.err;
+  EXPECT_NE(p.err.find("3 of 5 frames could not be read or used"), std::string::npos) << p.err;
+  EXPECT_FALSE(fs::exists(dir.file("pose.csv")));
   const CliRun s = runCli("spnav" + rig + " --socket " + dir.file("spnav.sock"), err());
   EXPECT_EQ(s.exit_code, 1) << s.err;
   EXPECT_NE(s.err.find("3 skipped (3 unreadable)"), std::string::npos) << s.err;

@@ -71,12 +71,14 @@ TEST(HostileRecording, KilledAtRandomMomentsItReplaysEveryCompleteFrameWithItsTi
         SIGKILL);
     SCOPED_TRACE("seed " + std::to_string(seed) + ", attempt " + std::to_string(attempt) + ", killed " +
                  std::to_string(delay) + " ms in");
-    fs::path left = dir.path() / name;  // finished before the kill: the committed session
-    if (run.signalled) {
+    fs::path left = dir.path() / name;  // finished before the kill landed: the committed session
+    if (run.signalled && run.exit_code != 0) {
       ++killed;
       ASSERT_EQ(run.exit_code, 128 + SIGKILL) << run.err;
       left = entryStartingWith(dir.path(), name + ".partial.");
       ASSERT_FALSE(left.empty()) << "the killed recording was not kept";
+    } else {
+      ASSERT_EQ(run.exit_code, 0) << run.err;
     }
     const fs::path csv = left / "session.csv";
     if (!fs::exists(csv)) continue;  // killed before its first row could exist

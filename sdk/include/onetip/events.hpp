@@ -149,8 +149,8 @@ struct MarkerState {
   /// @brief Position along S.y, mm (when valid).
   /// @var z
   /// @brief Position along S.z, mm (when valid).
-  /// Valid now and at rest: the displacement ux, uy, uz is known. The rest is the reference frame's, kept
-  /// true while nothing touches: it follows a camera shifted against the pad and slow drift (docs/pose).
+  /** Valid now and at rest: the displacement ux, uy, uz is known. The rest is the reference frame's, kept
+   *  true while nothing touches: it follows a camera shifted against the pad and slow drift (docs/pose). */
   bool displaced = false;
   double ux = 0, uy = 0, uz = 0;
   /// @var ux
