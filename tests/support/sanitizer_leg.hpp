@@ -41,3 +41,15 @@
 #else
 #define ONETIP_PASSES_UNDER_GCC_ROUNDING_ONLY() static_cast<void>(0)
 #endif
+
+// A test that takes every file descriptor the process may open starves the sanitizer runtimes, which
+// need descriptors of their own: UndefinedBehaviorSanitizer's vptr check probes an object's memory
+// through a pipe and reports one it cannot probe as having an invalid vptr (a new thread's state, in
+// the spnav server's accept test), and the symbolizer needs a socket pair to say where. Such a test
+// runs in the Release leg only.
+#ifdef ONETIP_TEST_UNDER_SANITIZERS
+#define ONETIP_TAKES_EVERY_DESCRIPTOR_RELEASE_ONLY() \
+  GTEST_SKIP() << "it takes every file descriptor, which the sanitizer runtimes need (tests/support/sanitizer_leg.hpp)"
+#else
+#define ONETIP_TAKES_EVERY_DESCRIPTOR_RELEASE_ONLY() static_cast<void>(0)
+#endif

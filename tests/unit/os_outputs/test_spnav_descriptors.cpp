@@ -17,6 +17,7 @@
 
 #include "core/error.hpp"
 #include "os_outputs/spnav_server.hpp"
+#include "sanitizer_leg.hpp"
 #include "test_support.hpp"
 
 namespace onetip::os_outputs {
@@ -58,6 +59,7 @@ TEST(SpnavDescriptors, MaxClientsBeyondTheOpenFileLimitIsRefusedNamingIt) {
 }
 
 TEST(SpnavDescriptors, AClientArrivingWhenDescriptorsRunOutIsClosedAtOnce) {
+  ONETIP_TAKES_EVERY_DESCRIPTOR_RELEASE_ONLY();
   testing::ScratchDir dir;
   SpnavServerOptions o;
   o.socket_path = (dir.path() / "spnav.sock").string();
