@@ -57,6 +57,7 @@ bool RestKeeper::alignWholeField(const MarkerField& now, double noise_mm, double
     moved = std::max(moved, (g.motion * from[i] - from[i]).norm());
     centroid += from[i];
   }
+  if (moved <= bound) return false;  // a finger's G: the far markers stayed, the rest stays too
   centroid /= static_cast<double>(from.size());
   // Into or out of the pad at the field's centre: a flat plate pressed over the whole pattern looks so.
   if (std::abs((g.motion * centroid - centroid).z()) > bound) return false;

@@ -14,14 +14,15 @@
 //    G carries every marker close to where it is (a shifted principal point
 //    is not exactly a rigid motion in S: a 3 px step reads as 0.1 mm and
 //    0.3 deg with 0.02 mm left over). When some marker moved by more than
-//    move_sigmas sigma, G is taken for a move of the sensor if it explains
+//    move_sigmas sigma, G is taken for a move of the sensor if it moves some
+//    marker by more than that itself (a finger's G stays near the identity
+//    and leaves the rest alone), explains
 //    every marker to within half the contact threshold (what is left then
 //    never reads as a touch) and does not move the field's centre along S.z
 //    by more than move_sigmas sigma (a flat plate pressed over the whole
 //    pattern moves every marker rigidly into the pad). The rest becomes
 //    G r and, when the largest displacement reaches move_report_mm, the
-//    caller is told (an event). A finger's G is near the identity, so the
-//    rest barely moves. The contact analysis then sees only what a finger did.
+//    caller is told (an event). The contact analysis then sees only what a finger did.
 //  - slow drift: each marker with |e_i| below drift_sigmas sigma moves its
 //    rest towards p_i by dt / drift_time_s of e_i (an exponential average
 //    with that time constant). Noise moves it by sigma sqrt(dt / 2 tau), a
