@@ -10,6 +10,7 @@
 #include "pose/centroid_motion.hpp"
 #include "pose/contact_cap.hpp"
 #include "pose/onset_reference.hpp"
+#include "pose/step_limit.hpp"
 #include "pose/stick_set_creep.hpp"
 #include "pose/touching_markers.hpp"
 
@@ -18,12 +19,13 @@ namespace onetip::pose {
 using contact::MarkerLabel;
 
 AdaptivePoseEstimator::AdaptivePoseEstimator(AdaptivePoseOptions options)
-    : options_(options), uncertainty_(options.uncertainty) {
+    : options_(options), weighted_(options), uncertainty_(options.uncertainty) {
   options_.validate();
   t_ = deriveThresholds(options_, SensorSelf{});
 }
 
 void AdaptivePoseEstimator::reset() {
+  weighted_.reset();
   active_ = false;
   macro_slip_ = false;
   macro_frames_ = 0;
@@ -334,21 +336,6 @@ Eigen::Isometry3d AdaptivePoseEstimator::centroidStep(const contact::ContactFiel
   return centroidMotion(common.before, common.after);
 }
 
-Eigen::Isometry3d AdaptivePoseEstimator::limitStep(const Eigen::Isometry3d& increment, bool& limited) const {
-  const Eigen::Vector3d c = pose_ * c0_;
-  const Eigen::Vector3d d = increment * c - c;
-  const Eigen::AngleAxisd aa(increment.linear());
-  double s = 1;
-  if (d.norm() > t_.max_step_mm) s = std::min(s, t_.max_step_mm / d.norm());
-  if (aa.angle() > t_.max_step_rad) s = std::min(s, t_.max_step_rad / aa.angle());
-  limited = s < 1;
-  if (!limited) return increment;
-  Eigen::Isometry3d out = Eigen::Isometry3d::Identity();
-  out.linear() = Eigen::AngleAxisd(s * aa.angle(), aa.axis()).toRotationMatrix();
-  out.translation() = c + s * d - out.linear() * c;
-  return out;
-}
-
 PoseStep AdaptivePoseEstimator::update(const contact::ContactField& field, const MarkerField& measured,
                                        const SensorSelf& self) {
   if (!field.in_contact || field.status != contact::ContactFieldStatus::ok) {
@@ -360,6 +347,7 @@ PoseStep AdaptivePoseEstimator::update(const contact::ContactField& field, const
   const MarkerField trusted = field.low_confidence > 0 ? contact::trustedMarkers(measured, field) : MarkerField{};
   const MarkerField& now = field.low_confidence > 0 ? trusted : measured;
   t_ = deriveThresholds(options_, self);
+  if (options_.policy == ModelPolicy::weighted) return weighted_.update(field, now, t_);
   classifier_.setOptions({t_.slip_mm, t_.stick_hold_frames});
   if (!active_) {
     PoseStep first = start(field, now);
@@ -387,7 +375,7 @@ PoseStep AdaptivePoseEstimator::update(const contact::ContactField& field, const
       static_cast<int>(region.markers.size()) >= options_.min_macro_markers)
     checkMacroSlip(field, now, region, increment);
 
-  increment = limitStep(increment, step.step_limited);
+  increment = limitIncrement(increment, pose_ * c0_, t_.max_step_mm, t_.max_step_rad, step.step_limited);
   pose_ = increment * pose_;
   classifier_.anchorNew(region.markers, now, pose_);
 

@@ -66,7 +66,9 @@
 //     macro_size_change (a deepening press moves its centre).
 //  4. Safety: one frame's increment is limited to max_speed_mm_s of motion of
 //     the contact point and max_rate_deg_s of rotation times the frame
-//     interval (scaled down, direction kept).
+//     interval (scaled down, direction kept; pose/step_limit.hpp).
+// With ModelPolicy::weighted every frame goes to the one-objective prototype
+// instead (pose/weighted_pose_estimator.hpp, a comparison policy).
 #pragma once
 
 #include <Eigen/Geometry>
@@ -80,28 +82,10 @@
 #include "pose/adaptive_pose_options.hpp"
 #include "pose/contact_snapshot.hpp"
 #include "pose/model_selection.hpp"
+#include "pose/pose_step.hpp"
+#include "pose/weighted_pose_estimator.hpp"
 
 namespace onetip::pose {
-
-struct PoseStep {
-  bool active = false;           // in contact and tracking
-  bool onset = false;            // first frame of a contact (pose = identity); with another
-                                 // finger on the pad it may follow the last frame of one directly
-  bool step_limited = false;     // the increment was scaled down (safety limit)
-  bool solver_failed = false;    // Ceres or Kabsch failed; the centroid model stood in
-  bool stuck_again = false;      // the markers stick again (stickingAgain): a stick model took over from the footprint
-  PoseModel model = PoseModel::none;
-  ContactState state = ContactState::none;
-  int region = -1;               // index into ContactField::regions that is tracked
-  int n_stick = 0, n_slip = 0;
-  Eigen::Isometry3d increment = Eigen::Isometry3d::Identity();  // T_k T_{k-1}^-1
-  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();       // T_k, since onset
-  Eigen::Vector3d onset_centroid{0, 0, 0};                      // c0 (S, mm)
-  EstimatorThresholds thresholds;                               // in force this frame
-  std::vector<contact::MarkerLabel> labels;  // per marker id: outside, stick or slip
-  std::vector<double> stick_probability;     // per marker id, [0, 1] (contact/stick_probability.hpp); 0 outside
-  Input6 sd;  // one standard deviation of each component of the 6-D input (mm, deg; pose/pose_uncertainty.hpp)
-};
 
 class AdaptivePoseEstimator {
  public:
@@ -167,13 +151,13 @@ class AdaptivePoseEstimator {
   Eigen::Isometry3d centroidStep(const contact::ContactField& field, const std::vector<int>& members,
                                  const MarkerField& now) const;
   void remember(const contact::ContactField& field, const MarkerField& now, const contact::ContactRegion& region);
-  Eigen::Isometry3d limitStep(const Eigen::Isometry3d& increment, bool& limited) const;
   // Per-marker stick probabilities and the pose's sd for this frame (pose/pose_uncertainty.hpp): the
   // stick set is the stick-labelled markers weighted by their probability; none while the footprint
   // carries the estimate.
   void reportUncertainty(const MarkerField& now, const Eigen::Isometry3d& increment, PoseStep& step);
 
   AdaptivePoseOptions options_;
+  WeightedPoseEstimator weighted_;
   EstimatorThresholds t_;                    // of the frame being processed
   contact::StickSlipClassifier classifier_;
   PoseUncertainty uncertainty_;

@@ -38,7 +38,8 @@ namespace onetip::pose {
 // one model for every frame (for comparisons): kabsch_only is the paper's
 // Eq. 1 between consecutive frames over all region markers; stick_slip_only
 // runs Ceres even at full stick; centroid_only uses the footprint throughout.
-enum class ModelPolicy : std::uint8_t { adaptive = 0, kabsch_only, stick_slip_only, centroid_only };
+// weighted: one objective with stick weights (pose/weighted_pose_estimator.hpp).
+enum class ModelPolicy : std::uint8_t { adaptive = 0, kabsch_only, stick_slip_only, centroid_only, weighted };
 
 struct AdaptivePoseOptions {
   StickSlipSolverOptions solver;

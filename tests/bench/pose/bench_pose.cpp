@@ -62,9 +62,10 @@ void BM_ContactAndPose(benchmark::State& state) {
   state.SetLabel(std::string(o.policy == pose::ModelPolicy::adaptive          ? "adaptive"
                              : o.policy == pose::ModelPolicy::kabsch_only     ? "kabsch_only"
                              : o.policy == pose::ModelPolicy::stick_slip_only ? "ceres_every_frame"
-                                                                              : "centroid_only"));
+                             : o.policy == pose::ModelPolicy::centroid_only   ? "centroid_only"
+                                                                              : "weighted"));
 }
-BENCHMARK(BM_ContactAndPose)->DenseRange(0, 3);
+BENCHMARK(BM_ContactAndPose)->DenseRange(0, 4);
 
 void BM_Tracker(benchmark::State& state) {
   const auto& rec = slideRecording();

@@ -46,6 +46,7 @@ struct Args {
   std::string trace_out = "campaign_trace.csv";
   double trace_noise_mm = -1;  // < 0: the run's own (the campaign's noise per grey level)
   bool trace_images = false;   // the trace through rendered frames and the real front end
+  bool weighted = false;
 };
 
 constexpr const char* kUsage =
@@ -53,6 +54,7 @@ constexpr const char* kUsage =
     "                     [--parity odd|even|all]  (odd seeds to tune on, even seeds to accept on)\n"
     "                     [--sd-relative F] [--sd-turn DEG_PER_SQRT_S] [--sd-slide MM_PER_SQRT_S]\n"
     "                     (pose::PoseUncertaintyOptions, for tuning the reported sd on the odd seeds)\n"
+    "                     [--policy adaptive|weighted]  (the estimator: pose::ModelPolicy; default adaptive)\n"
     "       pose_campaign (--trace SEED | --trace-scenario FILE.yaml) [--trace-out frames.csv]\n"
     "                     [--trace-noise-mm SIGMA]  (marker noise per axis; the estimator is told it as its prior)\n"
     "                     [--trace-images 1]  (through rendered frames and the real front end instead)\n";
@@ -80,6 +82,10 @@ Args parse(int argc, char** argv) {
     else if (k == "--sd-relative") a.uncertainty.relative_increment_error = std::stod(v);
     else if (k == "--sd-turn") a.uncertainty.unseen_turn_deg_per_sqrt_s = std::stod(v);
     else if (k == "--sd-slide") a.uncertainty.unseen_slide_mm_per_sqrt_s = std::stod(v);
+    else if (k == "--policy") {
+      if (v != "adaptive" && v != "weighted") usageError("--policy must be adaptive or weighted");
+      a.weighted = v == "weighted";
+    }
     else if (k == "--out") a.out = v;
     else if (k == "--trace") a.trace = std::stol(v);
     else if (k == "--trace-scenario") a.trace_scenario = v;
@@ -222,6 +228,7 @@ int main(int argc, char** argv) {
       o.noise_mm = args.trace_noise_mm;
       o.tracker.pose.self.prior_noise_mm = std::max(args.trace_noise_mm, 1e-5);
     }
+    if (args.weighted) o.tracker.pose.policy = pose::ModelPolicy::weighted;
     double ms = 0;
     const auto frames =
         args.trace_images ? replayRendered(rs.scenario).frames : runField(record(rs.scenario, o), o.tracker, ms);
@@ -241,6 +248,7 @@ int main(int argc, char** argv) {
     o.noise_mm = kFieldNoisePerGreyMm * rs.conditions.noise_grey;
     o.seed = seed;
     o.tracker.pose.uncertainty = args.uncertainty;
+    if (args.weighted) o.tracker.pose.policy = pose::ModelPolicy::weighted;
     double ms = 0;
     const RunScore s = scoreRun(runField(record(rs.scenario, o), o.tracker, ms));
     diverged += s.judged_diverged ? 1 : 0;
