@@ -1,0 +1,65 @@
+// tests/dds/publisher_process.hpp — a sensed-vector publisher in a forked copy
+// of the test, as a second machine or an intruder would be: optionally in
+// another network namespace (setns into /run/netns/NAME, as `ip netns exec`
+// does) and with its own CYCLONEDDS_URI (a DDS Security identity, or none).
+// Fork it before the test starts threads (the Maestro emulator) or DDS.
+// Its exit status says whether any reader ever matched its writer (1) or none
+// did (0); 2: it could not enter the namespace.
+#pragma once
+
+#include <fcntl.h>
+#include <sched.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "child_process.hpp"
+#include "dds/participant.hpp"
+#include "dds/sensed_vector_link.hpp"
+#include "scoped_env.hpp"
+
+namespace onetip::test_support {
+
+struct PublisherPlan {
+  dds::DdsOptions net;                 // domain, namespace, interface and peers as seen from its namespace
+  std::string netns;                   // network namespace to publish from; empty: the test's own
+  std::optional<std::string> uri;      // its CYCLONEDDS_URI; nullopt: none (no DDS Security)
+  std::string sensor = "biotac_like";  // the name it announces in each sample
+  std::vector<double> values;
+  double rate_hz = 100;
+  double seconds = 1;                  // how long it publishes
+  bool wait_for_reader = true;         // first wait (up to 10 s) for a reader to match
+};
+
+inline ChildProcess publisherProcess(const PublisherPlan& plan) {
+  return ChildProcess([plan] {
+    using Clock = std::chrono::steady_clock;
+    if (!plan.netns.empty()) {
+      const int fd = ::open(("/run/netns/" + plan.netns).c_str(), O_RDONLY | O_CLOEXEC);
+      if (fd < 0 || ::setns(fd, CLONE_NEWNET) != 0) return 2;
+      ::close(fd);
+    }
+    const ScopedEnv env("CYCLONEDDS_URI", plan.uri);
+    dds::Participant participant(plan.net);
+    dds::SensedVectorPublisher writer(participant, plan.sensor);
+    bool matched = false;
+    const auto give_up = Clock::now() + std::chrono::seconds(10);
+    while (plan.wait_for_reader && writer.matchedReaders() == 0 && Clock::now() < give_up)
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    const auto period = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(1 / plan.rate_hz));
+    const auto end = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(plan.seconds));
+    for (auto next = Clock::now(); Clock::now() < end;) {
+      writer.publish(std::chrono::duration<double>(Clock::now().time_since_epoch()).count(), plan.values);
+      matched = matched || writer.matchedReaders() > 0;
+      next += period;
+      std::this_thread::sleep_until(next);
+    }
+    return matched ? 1 : 0;
+  });
+}
+
+}  // namespace onetip::test_support
