@@ -12,6 +12,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <functional>
 #include <optional>
 #include <string>
 #include <thread>
@@ -33,10 +34,12 @@ struct PublisherPlan {
   double rate_hz = 100;
   double seconds = 1;                  // how long it publishes
   bool wait_for_reader = true;         // first wait (up to 10 s) for a reader to match
+  double start_after_s = 0;            // then wait this long before the first sample
 };
 
-inline ChildProcess publisherProcess(const PublisherPlan& plan) {
-  return ChildProcess([plan] {
+// What the forked child runs: ChildProcess publisher(publisherBody(plan)).
+inline std::function<int()> publisherBody(const PublisherPlan& plan) {
+  return [plan] {
     using Clock = std::chrono::steady_clock;
     if (!plan.netns.empty()) {
       const int fd = ::open(("/run/netns/" + plan.netns).c_str(), O_RDONLY | O_CLOEXEC);
@@ -50,6 +53,7 @@ inline ChildProcess publisherProcess(const PublisherPlan& plan) {
     const auto give_up = Clock::now() + std::chrono::seconds(10);
     while (plan.wait_for_reader && writer.matchedReaders() == 0 && Clock::now() < give_up)
       std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    std::this_thread::sleep_for(std::chrono::duration<double>(plan.start_after_s));
     const auto period = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(1 / plan.rate_hz));
     const auto end = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(plan.seconds));
     for (auto next = Clock::now(); Clock::now() < end;) {
@@ -59,7 +63,7 @@ inline ChildProcess publisherProcess(const PublisherPlan& plan) {
       std::this_thread::sleep_until(next);
     }
     return matched ? 1 : 0;
-  });
+  };
 }
 
 }  // namespace onetip::test_support

@@ -64,10 +64,10 @@ class SecureTeleop : public TeleopOverDds {
                                kSensorHz, kSensorSeconds, true};
     PublisherPlan rogue{sides.publisher_net, sides.publisher_netns, std::nullopt, "biotac_like", b, 1000, kRunSeconds,
                         false};
-    test_support::ChildProcess plain_rogue = test_support::publisherProcess(rogue);
+    test_support::ChildProcess plain_rogue(test_support::publisherBody(rogue));
     rogue.uri = uriOf("rogue_pki", "sensor");
-    test_support::ChildProcess foreign_ca_rogue = test_support::publisherProcess(rogue);
-    test_support::ChildProcess publisher = test_support::publisherProcess(sensor);
+    test_support::ChildProcess foreign_ca_rogue(test_support::publisherBody(rogue));
+    test_support::ChildProcess publisher(test_support::publisherBody(sensor));
 
     devices::testing::MaestroEmulator maestro;
     Launch how;
