@@ -12,6 +12,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cstdio>
 #include <functional>
 #include <optional>
 #include <string>
@@ -50,9 +51,13 @@ inline std::function<int()> publisherBody(const PublisherPlan& plan) {
     dds::Participant participant(plan.net);
     dds::SensedVectorPublisher writer(participant, plan.sensor);
     bool matched = false;
-    const auto give_up = Clock::now() + std::chrono::seconds(10);
+    const auto made = Clock::now(), give_up = made + std::chrono::seconds(10);
     while (plan.wait_for_reader && writer.matchedReaders() == 0 && Clock::now() < give_up)
       std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    if (plan.wait_for_reader)  // with DDS Security this includes the handshake
+      std::printf("publisher '%s': a reader matched %.0f ms after its writer was made\n", plan.sensor.c_str(),
+                  std::chrono::duration<double, std::milli>(Clock::now() - made).count());
+    std::fflush(stdout);  // the child ends with _exit
     std::this_thread::sleep_for(std::chrono::duration<double>(plan.start_after_s));
     const auto period = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(1 / plan.rate_hz));
     const auto end = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(plan.seconds));
