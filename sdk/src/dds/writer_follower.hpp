@@ -8,7 +8,9 @@
 // ignored and counted, whatever name they announce, so a later writer cannot
 // take over by copying the name. If the followed writer goes away the stream
 // goes stale (the operator loop retracts) and stays so until the subscriber is
-// made again (restart `onetip teleop`).
+// made again (restart `onetip teleop`). The loop's liveliness check counts
+// every writer of the topic, so while an ignored writer lives, the loss of the
+// followed one is noticed by the stale timer alone.
 //
 // The choice is made in a topic filter (Cyclone DDS runs it on its receive
 // threads before a sample enters the reader's history), not when samples are
