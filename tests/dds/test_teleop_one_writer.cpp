@@ -34,7 +34,7 @@ class OneWriter : public TeleopOverDds {
     PublisherPlan p{net_, "", std::nullopt, sensor, v, rate_hz, seconds, true, start_after_s};
     return p;
   }
-  // Runs teleop for 3 s with the given extra options while the publishers run; returns its log.
+  // Runs teleop with the given extra options until the publishers are done; returns its log.
   std::string runTeleop(const std::string& extra, std::vector<PublisherPlan> plans) {
     std::vector<std::unique_ptr<test_support::ChildProcess>> publishers;
     for (const auto& p : plans)
@@ -42,9 +42,10 @@ class OneWriter : public TeleopOverDds {
     devices::testing::MaestroEmulator maestro;
     Launch how;
     how.extra = extra;
-    test_support::ChildProcess teleop(teleopCommand(maestro.path(), 100, 3.0, how), dir_.file("teleop.log"));
-    EXPECT_EQ(teleop.wait(30), 0) << teleop.log();
+    test_support::ChildProcess teleop(teleopCommand(maestro.path(), 100, 0, how), dir_.file("teleop.log"));
     for (auto& p : publishers) EXPECT_EQ(p->wait(20), 1) << "a publisher never matched teleop";
+    teleop.signal(SIGINT);
+    EXPECT_EQ(teleop.wait(30), 0) << teleop.log();
     std::printf("%s", teleop.log().c_str());
     const std::vector<Period> periods = periodsOf(maestro);
     EXPECT_TRUE(std::any_of(periods.begin(), periods.end(), [&](const Period& p) { return near(p, want_a_); }))
