@@ -44,6 +44,7 @@ suite=(
   libspnav-dev libevdev-dev  # clients of `onetip spnav` and `onetip joystick` in the tests
   python3-matplotlib python3-pytest
   libfastrtps-dev fastddsgen iproute2 nftables  # DDS tests: the Fast DDS subscriber; network namespaces, dropped packets
+  openssl  # DDS Security tests: the test PKI of docs/dds/security/make-test-pki.sh
   clang libclang-rt-14-dev  # the sanitizer tree and the libFuzzer harnesses (tests/fuzz)
   qemu-system-x86 linux-image-amd64 busybox-static cpio udev  # camera and uinput drills under qemu
 )

@@ -44,6 +44,8 @@ int runPublish(const Args& args) {
   const dds::DdsOptions dds_options = ddsOptionsFromArgs(args);
   const int stride = args.getInt("sensed-stride", 4);
   if (stride < 0) throw InputError("--sensed-stride " + std::to_string(stride) + ": must be >= 0 (0: off)");
+  const std::string sensor_name = args.optional("sensor").value_or("onetip_contact");
+  dds::validateSensorName(sensor_name, "--sensor");
   const pipeline::PipelineOptions options = pipelineOptionsFromArgs(args);
   auto pipeline = openPipelineFromArgs(args, options);
   dds::Participant participant(dds_options);
@@ -52,7 +54,7 @@ int runPublish(const Args& args) {
   publishing.parent_frame = args.optional("tf-parent").value_or(publishing.parent_frame);
   dds::InputPublisher publisher(participant, publishing);
   std::unique_ptr<dds::SensedVectorPublisher> sensed;
-  if (stride > 0) sensed = std::make_unique<dds::SensedVectorPublisher>(participant, "onetip_contact");
+  if (stride > 0) sensed = std::make_unique<dds::SensedVectorPublisher>(participant, sensor_name);
 
   // Both callbacks run on the pipeline's processing thread, a frame's events first.
   pipeline->onEvent([&](const pipeline::PipelineEvent& e) { publisher.publishEvent(e.frame, e.event, e.arrival); });
@@ -84,6 +86,8 @@ std::vector<OptionSpec> publishOptions() {
   for (auto& s : ddsOptionSpecs()) o.push_back(s);
   o.push_back({"sensed-stride", "publish the contact field on haptic/sensed, every N-th marker row and column "
                                 "(default 4: 75 channels on 17x17; 0: off)", false, false});
+  o.push_back({"sensor", "the sensor name announced on haptic/sensed, which `teleop --sensor` follows: 1 .. 64 "
+                         "characters of [A-Za-z0-9_.-] (default onetip_contact)", false, false});
   o.push_back({"wait-subscribers", "wait up to this many seconds for a subscriber on every topic (default 0)", false,
                false});
   o.push_back({"tf-parent", "TF parent frame of the sensor frame <namespace>_sensor, published on /tf_static "

@@ -3,7 +3,9 @@
 // kNN renderer in the 1 kHz loop and drives the 3-servo platform through its
 // Maestro (dds/operator_loop.hpp), retracting when the stream stops or goes
 // stale or DDS declares its publisher gone (liveliness lease), until
-// SIGINT/SIGTERM or --duration.
+// SIGINT/SIGTERM or --duration. It follows one writer of the stream (the
+// first, or the one announcing --sensor; dds/writer_follower.hpp), names it
+// on stderr and counts what other writers sent.
 #include <csignal>
 #include <cstdio>
 
@@ -23,6 +25,8 @@ extern "C" void stopTeleop(int) {
 
 int runTeleop(const Args& args) {
   const dds::DdsOptions dds_options = ddsOptionsFromArgs(args);
+  const std::string sensor = args.optional("sensor").value_or("");
+  if (!sensor.empty()) dds::validateSensorName(sensor, "--sensor");
   dds::OperatorLoopOptions o;
   o.neighbors = args.getInt("neighbors", o.neighbors);
   o.stale_s = args.getDouble("stale-ms", o.stale_s * 1e3) * 1e-3;
@@ -35,7 +39,11 @@ int runTeleop(const Args& args) {
   const haptics::TactileDataset dataset = haptics::loadDataset(args.get("dataset"));
   const haptics::KnnRenderer renderer(dataset);
   dds::Participant participant(dds_options);
-  dds::SensedVectorSubscriber input(participant);
+  dds::SensedVectorSubscriber input(participant, sensor);
+  input.follower().locked = [](const dds::FollowedWriter& w) {  // once, from the loop thread
+    std::fprintf(stderr, "teleop: following writer %s (sensor '%s'); samples of any other writer are ignored\n",
+                 w.guid.c_str(), w.sensor.c_str());
+  };
   devices::ServoPlatform platform(servo);
   platform.open();
   dds::OperatorLoop loop(input, renderer, platform, o);
@@ -53,6 +61,10 @@ int runTeleop(const Args& args) {
   sigaction(SIGTERM, &old_term, nullptr);
   g_loop = nullptr;
   platform.close();  // retracts
+  const dds::FollowedWriter followed = input.follower().followed();
+  std::fprintf(stderr, "teleop: followed writer %s (sensor '%s'); ignored %llu samples of other writers\n",
+               followed.guid.empty() ? "none" : followed.guid.c_str(), followed.sensor.c_str(),
+               static_cast<unsigned long long>(s.ignored));
 
   std::printf("received %llu sensed vectors (%llu refused), rendered %llu, %llu stalls (%llu: publisher gone), "
               "%llu commands; loop %s, %.3f %% deadlines missed\n",
@@ -72,7 +84,10 @@ std::vector<OptionSpec> teleopOptions() {
                             {"neighbors", "kNN neighbours (default 4)", false, false},
                             {"stale-ms", "retract when no sensed vector came for this long (default 100)", false, false},
                             {"rate-hz", "display loop rate (default 1000)", false, false},
-                            {"duration", "seconds to run (default: until interrupted)", false, false}};
+                            {"duration", "seconds to run (default: until interrupted)", false, false},
+                            {"sensor", "follow the writer of haptic/sensed announcing this sensor name (publish "
+                                       "--sensor; default: the first writer whose sample arrives); others are ignored",
+                             false, false}};
   for (auto& s : ddsOptionSpecs()) o.push_back(s);
   return o;
 }

@@ -49,6 +49,10 @@ class ChildProcess {
       pid_ = -1;
     }
   }
+  // Sends a signal (e.g. SIGINT: `onetip teleop` stops and prints its summary).
+  void signal(int sig) {
+    if (pid_ > 0) ::kill(pid_, sig);
+  }
   ChildProcess(const ChildProcess&) = delete;
   ChildProcess& operator=(const ChildProcess&) = delete;
 

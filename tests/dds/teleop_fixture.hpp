@@ -12,6 +12,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <regex>
 #include <string>
 #include <thread>
 #include <vector>
@@ -45,10 +46,24 @@ inline size_t rowWithAngles(const haptics::TactileDataset& d, double lo, double 
   return 0;
 }
 
+// The number a pattern's first group matches in a log (e.g. teleop's closing line), -1 when absent.
+inline long countIn(const std::string& log, const std::string& pattern) {
+  std::smatch m;
+  return std::regex_search(log, m, std::regex(pattern)) ? std::stol(m[1]) : -1;
+}
+
 // The emulated Maestro's targets in degrees, one entry per driver period.
 struct Period {
   Clock::time_point t;
   std::array<double, 3> deg;
+};
+
+// How `onetip teleop` is started beyond the defaults: a command prefix (e.g. "ip netns exec NS env
+// CYCLONEDDS_URI=..."), its network options, and further options.
+struct Launch {
+  std::string prefix;
+  std::string network = "--interface lo --peer 127.0.0.1";
+  std::string extra;
 };
 
 class TeleopOverDds : public ::testing::Test {
@@ -61,11 +76,11 @@ class TeleopOverDds : public ::testing::Test {
     net_.peers = {"127.0.0.1"};
   }
 
-  std::string teleopCommand(const std::string& port, int stale_ms, double duration_s) const {
-    return std::string(onetip::test::cliPath()) + " teleop --dataset " + dir_.file("dataset.csv") + " --port " + port +
-           " --domain " + std::to_string(net_.domain) + " --namespace " + net_.ros_namespace +
-           " --interface lo --peer 127.0.0.1 --stale-ms " + std::to_string(stale_ms) + " --duration " +
-           std::to_string(duration_s);
+  std::string teleopCommand(const std::string& port, int stale_ms, double duration_s, const Launch& how = {}) const {
+    return how.prefix + " " + onetip::test::cliPath() + " teleop --dataset " + dir_.file("dataset.csv") + " --port " +
+           port + " --domain " + std::to_string(net_.domain) + " --namespace " + net_.ros_namespace + " " +
+           how.network + " --stale-ms " + std::to_string(stale_ms) + " --duration " + std::to_string(duration_s) + " " +
+           how.extra;
   }
 
   // Publishes v at 100 Hz (a BioTac's rate) for `seconds`; returns the time of the last sample.

@@ -8,7 +8,6 @@
 // over, and must retract after a single bad sample even while valid samples
 // keep coming; teleop must count what it refused.
 #include <limits>
-#include <regex>
 
 #include "child_process.hpp"
 #include "teleop_fixture.hpp"
@@ -22,11 +21,7 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // The refused count of teleop's closing line ("received N sensed vectors (R refused)").
-long refusedOf(const std::string& log) {
-  std::smatch m;
-  static const std::regex pattern(R"(sensed vectors \((\d+) refused\))");
-  return std::regex_search(log, m, pattern) ? std::stol(m[1]) : -1;
-}
+long refusedOf(const std::string& log) { return countIn(log, R"(sensed vectors \((\d+) refused\))"); }
 
 struct Window {
   Clock::time_point begin, end;

@@ -38,7 +38,9 @@ class VethNamespaces {
   std::string execInA() const { return "ip netns exec " + ns_a_ + " "; }
   std::string execInB() const { return "ip netns exec " + ns_b_ + " "; }
   const std::string& namespaceA() const { return ns_a_; }
+  const std::string& namespaceB() const { return ns_b_; }
   const std::string& vethA() const { return veth_a_; }
+  const std::string& vethB() const { return veth_b_; }
   const std::string& addressA() const { return addr_a_; }
   const std::string& addressB() const { return addr_b_; }
 

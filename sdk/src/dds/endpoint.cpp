@@ -1,5 +1,6 @@
 #include "dds/endpoint.hpp"
 
+#include <cstdio>
 #include <vector>
 
 namespace onetip::dds {
@@ -37,9 +38,16 @@ int Writer::matchedReaders() const {
 }
 
 Reader::Reader(const Participant& participant, const dds_topic_descriptor_t& type, const std::string& topic_name,
-               StreamKind kind, const StreamQos& qos, double requested_deadline_s)
+               StreamKind kind, const StreamQos& qos, double requested_deadline_s,
+               std::optional<dds_topic_filter> filter)
     : name_(topic_name) {
   topic_ = makeTopic(participant, type, name_);
+  if (filter) {
+    if (const dds_return_t rc = dds_set_topic_filter_extended(topic_, &*filter); rc < 0) {
+      dds_delete(topic_);
+      checkDds(rc, "dds topic filter on " + name_);
+    }
+  }
   const QosPtr q = readerQos(kind, qos, requested_deadline_s);
   reader_ = dds_create_reader(participant.handle(), topic_, q.get(), nullptr);
   if (reader_ < 0) {
@@ -94,6 +102,20 @@ int Reader::aliveWriters() const {
   dds_liveliness_changed_status_t s{};
   checkDds(dds_get_liveliness_changed_status(reader_, &s), "dds liveliness of " + name_);
   return static_cast<int>(s.alive_count);
+}
+
+std::string Reader::writerGuid(dds_instance_handle_t writer) const {
+  dds_builtintopic_endpoint_t* e = dds_get_matched_publication_data(reader_, writer);
+  if (!e) return "unknown";
+  std::string guid;
+  char word[9];
+  for (size_t w = 0; w < 4; ++w) {
+    const unsigned char* b = e->key.v + 4 * w;
+    std::snprintf(word, sizeof word, "%x", static_cast<unsigned>(b[0] << 24 | b[1] << 16 | b[2] << 8 | b[3]));
+    guid += (w ? ":" : "") + std::string(word);
+  }
+  dds_builtintopic_free_endpoint(e);
+  return guid;
 }
 
 }  // namespace onetip::dds

@@ -9,6 +9,7 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <string>
 
 #include "dds/participant.hpp"
@@ -36,9 +37,12 @@ class Writer {
 class Reader {
  public:
   using Visit = std::function<void(const void* sample, const dds_sample_info_t& info)>;
+  // filter: optional, set on the reader's own topic before the reader is made
+  // (Cyclone DDS then drops what it refuses before the reader's history).
   Reader(const Participant& participant, const dds_topic_descriptor_t& type, const std::string& topic_name,
          StreamKind kind, const StreamQos& qos = {},
-         double requested_deadline_s = std::numeric_limits<double>::infinity());
+         double requested_deadline_s = std::numeric_limits<double>::infinity(),
+         std::optional<dds_topic_filter> filter = std::nullopt);
   ~Reader();
   Reader(const Reader&) = delete;
   Reader& operator=(const Reader&) = delete;
@@ -50,6 +54,9 @@ class Reader {
   int matchedWriters() const;
   // Writers whose liveliness is asserted now (0 after the publisher's lease expired).
   int aliveWriters() const;
+  // The GUID of a matched writer (a sample's publication_handle) as Cyclone DDS logs it,
+  // four hex words "prefix:prefix:prefix:entity"; "unknown" when it is no longer matched.
+  std::string writerGuid(dds_instance_handle_t writer) const;
   const std::string& topicName() const noexcept { return name_; }
 
  private:

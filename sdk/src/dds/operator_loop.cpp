@@ -114,6 +114,7 @@ OperatorLoopStats OperatorLoop::run(double duration_s) {
     ++stats.commands;
   });
   stats.rendered = worker.rendered();
+  stats.ignored = input_.follower().ignored();
   stats.sample_to_command = response.summary().front();
   return stats;
 }

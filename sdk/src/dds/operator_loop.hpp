@@ -4,7 +4,9 @@
 // fingertip display from a fixed-rate loop (haptics/periodic_loop.hpp, 1 kHz).
 //
 // Per tick:
-//   1. take the newest sensed sample, if any; a vector the dataset cannot
+//   1. take the newest sensed sample of the one writer the subscriber
+//      follows (dds/writer_follower.hpp; other writers' samples are ignored),
+//      if any; a vector the dataset cannot
 //      answer (haptics/sensed_bounds.hpp: a size other than its channel
 //      count, a NaN or infinite value, or one far outside the dataset's
 //      range) is refused: the device is told an input error (it retracts at
@@ -51,7 +53,8 @@ struct OperatorLoopOptions {
 };
 
 struct OperatorLoopStats {
-  std::uint64_t received = 0;        // sensed samples taken from DDS
+  std::uint64_t received = 0;        // sensed samples of the followed writer taken from DDS
+  std::uint64_t ignored = 0;         // samples of any other writer (writer_follower.hpp: one writer followed)
   std::uint64_t refused = 0;         // refused samples (size, non-finite, out of range) and empty renders
   std::uint64_t rendered = 0;
   std::uint64_t stalls = 0;          // times the stream went stale (either cause)

@@ -3,6 +3,7 @@
 #include <arpa/inet.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <stdexcept>
 
 #include "core/error.hpp"
@@ -81,6 +82,13 @@ std::string cycloneConfig(const DdsOptions& options) {
   return xml + "</Domain></CycloneDDS>";
 }
 
+std::string domainConfig(const DdsOptions& options, const char* user_uri) {
+  const std::string own = cycloneConfig(options);
+  const std::string user = user_uri ? user_uri : "";
+  if (own.empty() || user.find_first_not_of(" \t\r\n") == std::string::npos) return own;
+  return user + "," + own;
+}
+
 dds_return_t checkDds(dds_return_t rc, const std::string& what) {
   if (rc < 0) throw std::runtime_error(what + ": " + dds_strretcode(rc));
   return rc;
@@ -90,12 +98,16 @@ Participant::Participant(const DdsOptions& options) : options_(options) {
   options_.validate();
   options_.ros_namespace = stripLeadingSlash(options_.ros_namespace);
   const auto domain = static_cast<dds_domainid_t>(options_.domain);
-  const std::string config = cycloneConfig(options_);
+  const char* user_uri = std::getenv("CYCLONEDDS_URI");
+  const std::string config = domainConfig(options_, user_uri);
   if (!config.empty()) {
     domain_ = dds_create_domain(domain, config.c_str());
-    if (domain_ < 0)  // almost always an interface that does not exist or has no IPv4 address
+    if (domain_ < 0) {  // almost always an interface that does not exist or has no IPv4 address, or the user's file
+      const bool merged = config != cycloneConfig(options_);
       throw InputError("dds interface '" + options_.interface + "' / peers: Cyclone DDS refused the configuration (" +
-                       dds_strretcode(domain_) + "); is the interface up with an IPv4 address?");
+                       dds_strretcode(domain_) + "); is the interface up with an IPv4 address?" +
+                       (merged ? std::string(" Is CYCLONEDDS_URI='") + user_uri + "' valid?" : std::string()));
+    }
   }
   participant_ = dds_create_participant(domain, nullptr, nullptr);
   if (participant_ < 0) {

@@ -12,6 +12,13 @@
 // unicast discovery addresses (needed where the interface has no multicast,
 // such as the loopback); both together make a domain that uses no other
 // address.
+//
+// The user's CYCLONEDDS_URI is never dropped: with `interface` or `peers` the
+// domain is created from "<CYCLONEDDS_URI>,<onetip's XML>", a list Cyclone
+// DDS reads in order (0.10.2, verified in tests/dds/test_cyclone_uri.cpp):
+// a section only the user gives (Security, Tracing, ...) is kept whole; a
+// setting both give takes onetip's value (AllowMulticast); lists add up
+// (the user's interfaces and peers are used beside --interface and --peer).
 #pragma once
 
 #include <dds/dds.h>
@@ -38,6 +45,10 @@ std::string sensorFrameId(const std::string& ros_namespace);
 std::string rosTopicName(const std::string& ros_namespace, const std::string& name);
 // The Cyclone DDS configuration (XML) for `interface` and `peers`; empty when neither is set.
 std::string cycloneConfig(const DdsOptions& options);
+// The configuration the domain is created from: empty when onetip has none
+// (Cyclone then reads CYCLONEDDS_URI itself), else `user_uri` (the value of
+// CYCLONEDDS_URI; null or blank: none) followed by onetip's, comma-separated.
+std::string domainConfig(const DdsOptions& options, const char* user_uri);
 
 class Participant {
  public:

@@ -25,21 +25,25 @@ std::uint64_t SensedVectorPublisher::publish(double stamp_s, const std::vector<d
   return sequence_;
 }
 
-SensedVectorSubscriber::SensedVectorSubscriber(const Participant& p, const StreamQos& qos, double requested_deadline_s)
-    : reader_(p, onetip_msgs_msg_dds__SensedVector__desc, p.topic("haptic/sensed"), StreamKind::high_rate, qos,
-              requested_deadline_s) {}
+SensedVectorSubscriber::SensedVectorSubscriber(const Participant& p, const std::string& sensor, const StreamQos& qos,
+                                               double requested_deadline_s)
+    : follower_(sensor),
+      reader_(p, onetip_msgs_msg_dds__SensedVector__desc, p.topic("haptic/sensed"), StreamKind::high_rate, qos,
+              requested_deadline_s, follower_.topicFilter()) {}
 
 bool SensedVectorSubscriber::takeNewest(SensedSample& out) {
   bool got = false;
   reader_.take([&](const void* sample, const dds_sample_info_t& info) {
     const auto& s = *static_cast<const onetip_msgs_msg_dds__SensedVector_*>(sample);
+    const std::string sensor = s.sensor ? s.sensor : "";
+    follower_.taken(sensor, [&] { return reader_.writerGuid(info.publication_handle); });
     ++received_;
     if (got && s.serial <= out.sequence) return;
     out.received = std::chrono::steady_clock::now();
     out.latency_ms = static_cast<double>(dds_time() - info.source_timestamp) * 1e-6;
     out.sequence = s.serial;
     out.stamp_s = seconds({s.header.stamp.sec, s.header.stamp.nanosec});
-    out.sensor = s.sensor ? s.sensor : "";
+    out.sensor = sensor;
     out.values.assign(s.values._buffer, s.values._buffer + s.values._length);
     got = true;
   });

@@ -4,7 +4,8 @@
 // SensedVector.idl), with the high_rate QoS (best effort, keep last 1,
 // deadline, liveliness: stream_qos.hpp).
 //
-// The publisher numbers its samples 1, 2, ...; the subscriber reports each
+// The publisher numbers its samples 1, 2, ... and announces its sensor's
+// name in each; the subscriber follows one writer (writer_follower.hpp) and reports each
 // received sample with the time it arrived (steady clock) and its one-way
 // latency, the reader's wall clock at arrival minus the writer's source
 // timestamp (meaningful where both clocks are one, e.g. on one machine).
@@ -17,6 +18,7 @@
 #include <vector>
 
 #include "dds/endpoint.hpp"
+#include "dds/writer_follower.hpp"
 
 namespace onetip::dds {
 
@@ -44,18 +46,25 @@ class SensedVectorPublisher {
 
 class SensedVectorSubscriber {
  public:
-  // requested_deadline_s: the reader's deadline request (>= the writer's offer).
-  SensedVectorSubscriber(const Participant& participant, const StreamQos& qos = {},
-                         double requested_deadline_s = std::numeric_limits<double>::infinity());
-  // Takes what arrived (non-blocking) and returns the newest sample when one
-  // came since the last call (older ones taken with it are counted in received()).
+  // sensor: the name of the writer to follow (writer_follower.hpp; empty: the
+  // first writer a sample comes from). requested_deadline_s: the reader's
+  // deadline request (>= the writer's offer).
+  explicit SensedVectorSubscriber(const Participant& participant, const std::string& sensor = {},
+                                  const StreamQos& qos = {},
+                                  double requested_deadline_s = std::numeric_limits<double>::infinity());
+  // Takes what arrived (non-blocking) and returns the newest sample of the
+  // followed writer when one came since the last call (older ones taken with
+  // it are counted in received(); other writers' in follower().ignored()).
   bool takeNewest(SensedSample& out);
   bool waitForData(double timeout_s) { return reader_.waitForData(timeout_s); }
   std::uint64_t received() const noexcept { return received_; }
   int matchedWriters() const { return reader_.matchedWriters(); }
   int aliveWriters() const { return reader_.aliveWriters(); }
+  WriterFollower& follower() noexcept { return follower_; }
+  const WriterFollower& follower() const noexcept { return follower_; }
 
  private:
+  WriterFollower follower_;  // before reader_: the reader's topic filter refers to it
   Reader reader_;
   std::uint64_t received_ = 0;
 };
