@@ -14,16 +14,16 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 bash .ci/install-deps.sh --tests
 source .ci/build-env.sh
-# -gline-tables-only: the sanitizers' reports need file and line, not variables; it compiles 15 %
-# faster than -g and its objects are a sixth of the size (measured on a Ceres translation unit).
-flags="-O2 -gline-tables-only -DNDEBUG"
-CC=clang CXX=clang++ cmake -S . -B build-san -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_C_FLAGS_RELWITHDEBINFO="$flags" \
-  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="$flags" -DONETIP_SANITIZE=ON -DONETIP_FUZZ=ON -DONETIP_BUILD_TESTS=ON -DONETIP_BUILD_BENCHMARKS=OFF \
-  -DONETIP_WITH_DDS=ON >/dev/null
+# The tree is CMakePresets.json's `sanitize` preset, so a developer gets the same one with
+# `cmake --preset sanitize`: clang, -O2 -gline-tables-only (the sanitizers' reports need file and line,
+# not variables; it compiles 15 % faster than -g and its objects are a sixth of the size, measured on a
+# Ceres translation unit), ONETIP_SANITIZE, ONETIP_FUZZ, DDS on, benchmarks off.
+cmake --preset sanitize >/dev/null
 cmake --build build-san -j"$(nproc)"
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 status=0
-(cd build-san && ctest --output-on-failure -j"$(nproc)" -LE "package|docs" "$@") || status=1
+# The preset's test filter leaves out the labels package and docs and sets the same sanitizer options.
+ctest --preset sanitize -j"$(nproc)" "$@" || status=1
 bash tests/fuzz/run_fuzzers.sh build-san "${FUZZ_SECONDS:-10}" | tee "${FUZZ_RESULTS:-build-san/fuzz-results.txt}" ||
   status=1
 exit $status
