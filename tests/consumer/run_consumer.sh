@@ -5,6 +5,7 @@
 #  - consumer_c.c built with `pkg-config --cflags --libs onetip` alone, as C11
 #    with warnings as errors (the Cflags carry no C++ flag), then again after
 #    the prefix is moved elsewhere (onetip.pc is relative to its own folder);
+#  - every C header of bindings/c/include installed, each compiling alone (C11, C++);
 #  - `import onetip` with PYTHONPATH set to the prefix's site-packages;
 #  - a C# program compiled against the installed Onetip.dll (when mcs is here).
 # Usage: run_consumer.sh BUILD_DIR SOURCE_DIR
@@ -19,7 +20,9 @@ cmake -S "$src/tests/consumer" -B "$work/build" -DCMAKE_PREFIX_PATH="$work/prefi
 cmake --build "$work/build" >/dev/null
 LD_LIBRARY_PATH="$work/prefix/lib" "$work/build/consumer" "$scenario"
 LD_LIBRARY_PATH="$work/prefix/lib" "$work/build/consumer_c" "$scenario"
-test -f "$work/prefix/include/onetip_c.h" || { echo "onetip_c.h not installed" >&2; exit 1; }
+for h in "$src"/bindings/c/include/*.h; do  # onetip_c.h and every header it includes
+  test -f "$work/prefix/include/${h##*/}" || { echo "${h##*/} not installed" >&2; exit 1; }
+done
 for f in share/onetip/docs/reference.md share/onetip/scenarios/press.yaml bin/onetip; do
   test -f "$work/prefix/$f" || { echo "$f not installed" >&2; exit 1; }
 done
@@ -36,6 +39,10 @@ for prefix in "$work/prefix" "$work/moved"; do
   echo "pkg-config: $flags"
   cc -std=c11 -Wall -Wextra -pedantic -Werror "$src/tests/consumer/consumer_c.c" $flags -o "$work/consumer_pc"
   "$work/consumer_pc" "$scenario"
+  for h in "$prefix"/include/onetip_c*.h; do  # each C header alone, as C11 and C++ (pkg-config's Cflags)
+    echo "#include <${h##*/}>" | cc -x c -std=c11 -Wall -Wextra -pedantic -Werror -fsyntax-only $flags -
+    echo "#include <${h##*/}>" | c++ -x c++ -std=c++20 -Wall -Wextra -pedantic -Werror -fsyntax-only $flags -
+  done
   PYTHONPATH=$(echo "$prefix"/lib/python3*/dist-packages) /usr/bin/python3 -c \
     "import onetip; print('python: onetip', onetip.__version__, onetip.__file__)"
 done
