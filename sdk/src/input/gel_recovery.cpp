@@ -91,13 +91,17 @@ bool GelRecovery::recovering(const contact::ContactField& field, bool was_in_con
   } else if (recovering_) {
     // No marker moves away from the rest beyond the decay of the last frame, and the field does not grow;
     // else a finger touches again. (One still brushing the pad as it leaves only takes deformation away.)
-    recovering_ = pair.measured && pair.worst_growth_sigmas <= k && pair.alpha <= 1 + k * pair.alpha_sd;
+    // And it keeps shrinking at the recovery's own rate (or faster, as a finger leaves): a shrink that slows
+    // or stops is held by something, a finger.
+    const double rate = rate_sum_ / rate_count_;
+    recovering_ = pair.measured && pair.worst_growth_sigmas <= k &&
+                  pair.alpha <= rate + k * pair.alpha_sd * std::sqrt(1 + 1.0 / rate_count_);
     if (recovering_) {
       rate_sum_ += pair.alpha;
       ++rate_count_;
-    } else if (rate_count_ > 0) {
+    } else {
       // A finger touches the recovering gel: what is left of the recovery goes on at the measured rate.
-      remainder_alpha_ = rate_sum_ / rate_count_;
+      remainder_alpha_ = rate;
       remainder_.assign(previous_.size(), Eigen::Vector3d::Zero());
       for (size_t i = 0; i < previous_.size(); ++i)
         if (previous_valid_[i]) remainder_[i] = remainder_alpha_ * previous_[i];

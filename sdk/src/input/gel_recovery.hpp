@@ -30,16 +30,16 @@
 //     rate, exp(-dt / tau_c) per frame, more slowly.
 // A finger or a flat plate that lifts while its field keeps its shape also
 // shrinks in proportion; it is told apart only when its shrink does not slow
-// down where the shape change ends (docs/pose/README.md gives how often an
+// down where the shape change ends (docs/world/README.md gives how often an
 // elastic lift-off ends a few frames early by this).
-// While released, no marker may move away from the rest by more than
-// fit_sigmas s beyond the decay of the last frame (max_i |u_i,k| - alpha
-// |u_i,k-1|; looser than the release's bound: it holds the whole recovery
-// long), and the field may not grow beyond fit_sigmas of alpha's sd; the
-// first frame that breaks this holds a finger (a new touch, judged by the
-// contact rule as usual). A finger still brushing the pad as it leaves only
-// takes deformation away, and stays released. The recovery is over when the field is within the contact
-// threshold, where the contact rule alone says "no contact" and the rest
+// While released, no marker may move away from the rest by more than fit_sigmas s beyond the decay of
+// the last frame (max_i |u_i,k| - alpha |u_i,k-1|; looser than the release's bound: it holds the whole
+// recovery long), and alpha may not exceed the recovery's mean alpha so far by more than fit_sigmas of
+// its sd (sd_alpha sqrt(1 + 1/n) over n frames): a gel recovers at its own constant rate, and a shrink
+// that slows or stops is held by a finger. The first frame that breaks this holds a finger (a new
+// touch, or one that never left, judged by the contact rule as usual). A finger still brushing the pad
+// as it leaves only takes deformation away faster, and stays released. The recovery is over when the
+// field is within the contact threshold, where the contact rule alone says "no contact" and the rest
 // keeper takes over what is left.
 // A finger that touches the gel while it recovers (a press that begins
 // before the last one has gone) presses on a surface that keeps rising: the
@@ -63,20 +63,20 @@ namespace onetip::input {
 
 struct GelRecoveryOptions {
   bool enabled = true;
-  double fit_sigmas = 8;      // [3, 100] noise sigmas: a proportional copy, a scale that differs from 1
-  double release_factor = 3;  // [1, 100] x fit_sigmas: the shape change of the frame the finger left in
+  double fit_sigmas = 8;              // [3, 100] noise sigmas: a proportional copy, a scale that differs from 1
+  double release_factor = 3;          // [1, 100] x fit_sigmas: the shape change of the frame the finger left in
   double release_false_alarm = 1e-3;  // [1e-9, 0.1] per frame: chance that noise alone breaks a release's fit
-  void validate() const;      // throws InputError naming the bad field
+  void validate() const;              // throws InputError naming the bad field
 };
 
 // One frame pair under the test above (exposed for tests and tools).
 struct DecayPair {
-  bool measured = false;   // enough markers and a field to scale
-  double alpha = 0;        // least-squares scale of the last field onto this one
-  double alpha_sd = 0;     // its standard deviation
-  double worst_sigmas = 0; // the largest residual in units of its sd s
+  bool measured = false;           // enough markers and a field to scale
+  double alpha = 0;                // least-squares scale of the last field onto this one
+  double alpha_sd = 0;             // its standard deviation
+  double worst_sigmas = 0;         // the largest residual in units of its sd s
   double worst_growth_sigmas = 0;  // the largest |u_i,k| - alpha |u_i,k-1|, in units of s
-  int markers = 0;         // markers in the fit
+  int markers = 0;                 // markers in the fit
 };
 
 // The bound b that the largest of `markers` residuals, each with three independent N(0, 1) components, exceeds
@@ -112,7 +112,7 @@ class GelRecovery {
   double rate_sum_ = 0;  // sum and count of the recovery's per-frame scales alpha, for its mean rate
   int rate_count_ = 0;
   std::vector<Eigen::Vector3d> remainder_;  // the interrupted recovery, as of this frame
-  double remainder_alpha_ = 0;               // its per-frame scale: the recovery's mean alpha
+  double remainder_alpha_ = 0;              // its per-frame scale: the recovery's mean alpha
   bool remainder_began_ = false;
 };
 

@@ -283,8 +283,8 @@ int main(int argc, char** argv) {
       const double marker_rmse = std::sqrt((rr.marker_rmse_mm[0] * rr.marker_rmse_mm[0] +
                                             rr.marker_rmse_mm[1] * rr.marker_rmse_mm[1] +
                                             rr.marker_rmse_mm[2] * rr.marker_rmse_mm[2]) / 3.0);
-      out.row(row("image", rs.conditions, rs.scenario.world, marker_rmse, scoreRun(rr.frames), contactEvents(rr.frames),
-                  0, marker_rmse));
+      out.row(row("image", rs.conditions, rs.scenario.world, marker_rmse, scoreRun(rr.frames),
+                  contactEvents(rr.frames), 0, marker_rmse));
       ++image_done;
     }
     std::fprintf(stderr, "\rrun %d/%d, diverged (observable and full) %d, image runs %d", i + 1, args.runs, diverged, image_done);

@@ -9,8 +9,8 @@
 #include <random>
 #include <string>
 
-#include "input/gel_recovery.hpp"
 #include "contact_events.hpp"
+#include "input/gel_recovery.hpp"
 #include "sim_replay.hpp"
 #include "test_paths.hpp"
 

@@ -8,7 +8,9 @@ int ContactEvents::lateEnds() const {
   return static_cast<int>(std::count_if(end_lag.begin(), end_lag.end(), [](int lag) { return lag > kLateEndFrames; }));
 }
 
-int ContactEvents::worstEndLag() const { return end_lag.empty() ? 0 : *std::max_element(end_lag.begin(), end_lag.end()); }
+int ContactEvents::worstEndLag() const {
+  return end_lag.empty() ? 0 : *std::max_element(end_lag.begin(), end_lag.end());
+}
 
 ContactEvents contactEvents(const std::vector<ReplayFrame>& frames) {
   ContactEvents e;

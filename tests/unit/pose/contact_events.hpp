@@ -24,10 +24,10 @@ constexpr int kLateEndFrames = 2;  // issue 38: within 2 frames of the truth's l
 
 struct ContactEvents {
   std::vector<int> truth_onset, truth_end, estimate_onset, estimate_end;  // frames
-  std::vector<int> end_lag;  // per truth end (frames; see above)
-  int onsets_untouched = 0;  // false onsets
-  int lateEnds() const;      // truth ends the estimate follows more than kLateEndFrames late
-  int worstEndLag() const;   // the largest end lag (0 without a lift-off)
+  std::vector<int> end_lag;                                               // per truth end (frames; see above)
+  int onsets_untouched = 0;                                               // false onsets
+  int lateEnds() const;     // truth ends the estimate follows more than kLateEndFrames late
+  int worstEndLag() const;  // the largest end lag (0 without a lift-off)
 };
 
 ContactEvents contactEvents(const std::vector<ReplayFrame>& frames);
