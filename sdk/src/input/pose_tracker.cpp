@@ -16,6 +16,7 @@ void PoseTrackerOptions::validate() const {
   shaping.validate();
   press.validate();
   rest.validate();
+  recovery.validate();
   for (double r : working_range) requireAbove("pose tracker: working_range entries", r, 0);
   requireAtLeast("pose tracker: clamp_factor", clamp_factor, 1);
   requireInRange("pose tracker: marker_depth_mm", marker_depth_mm, 0, MarkerPattern::kMaxMarkerDepthMm, "mm");
@@ -26,6 +27,7 @@ PoseTracker::PoseTracker(PoseTrackerOptions options)
       analyzer_(options_.contact),
       self_(options_.pose.self),
       rest_keeper_(options_.rest),
+      recovery_(options_.recovery),
       estimator_(options_.pose),
       filter_(makeInputFilter(options_.filter)),
       button_(options_.press) {}
@@ -35,6 +37,7 @@ void PoseTracker::reset() {
   if (filter_) filter_->reset();
   button_.reset();
   rest_keeper_.reset();
+  recovery_.reset();
   last_ = TrackerResult{};
 }
 
@@ -66,7 +69,16 @@ TrackerResult PoseTracker::update(const MarkerField& now_S, const MarkerField& r
   const auto contact_start = std::chrono::steady_clock::now();
   const RestUpdate rest_update = rest_keeper_.update(now_S, rest_S, last_.contact, self_.current().noise_mm,
                                                      options_.contact.contact_threshold_mm, t);
-  r.field = analyzer_.analyze(now_S, rest_keeper_.rest());
+  // A finger on a recovering gel: the markers as the finger alone moves them (gel_recovery.hpp).
+  MarkerField now = withoutRemainder(now_S, recovery_.advance());
+  r.field = analyzer_.analyze(now, rest_keeper_.rest());
+  const bool recovering = r.field.status == contact::ContactFieldStatus::ok &&
+                          recovery_.recovering(r.field, last_.contact, self_.current().noise_mm);
+  if (recovering) clearContact(r.field);
+  if (recovery_.remainderBegan()) {
+    now = withoutRemainder(now_S, recovery_.remainder());
+    r.field = analyzer_.analyze(now, rest_keeper_.rest());
+  }
   r.contact_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - contact_start).count();
   if (r.field.status == contact::ContactFieldStatus::too_few_markers) {
     TrackerResult held = last_;
@@ -80,8 +92,8 @@ TrackerResult PoseTracker::update(const MarkerField& now_S, const MarkerField& r
     return held;
   }
   self_.setRest(rest_S);
-  self_.observe(now_S, t, !r.field.in_contact);
-  r.step = estimator_.update(r.field, now_S, self_.current());
+  self_.observe(now_S, t, !r.field.in_contact && !recovering);  // a recovering gel moves: not noise
+  r.step = estimator_.update(r.field, now, self_.current());
   r.contact = r.step.active;
   r.state = r.step.state;
   if (r.step.onset) {

@@ -4,7 +4,8 @@
 // the sensor frame S (mm, same grid) and the time in seconds runs
 //   the rest kept true while nothing touches (rest_keeper.hpp: a shifted
 //   camera, slow drift, hidden markers; each reported as an error event)
-//   -> contact analysis (contact/contact_analyzer.hpp)
+//   -> contact analysis (contact/contact_analyzer.hpp), without the
+//      deformation of a gel recovering after the finger left (gel_recovery.hpp)
 //   -> what the sensor measures about itself (pose/sensor_self_model.hpp:
 //      marker noise on the frames out of contact, pitch, frame interval)
 //   -> stick/slip labels and the finger's increment (pose/adaptive_pose_estimator.hpp)
@@ -25,6 +26,7 @@
 #include "core/pattern.hpp"
 #include "input/input_event.hpp"
 #include "input/input_filter.hpp"
+#include "input/gel_recovery.hpp"
 #include "input/input_shaping.hpp"
 #include "input/pose_accumulator.hpp"
 #include "input/press_button.hpp"
@@ -42,6 +44,7 @@ struct PoseTrackerOptions {
   InputShaping shaping;
   PressButtonOptions press;
   RestKeeperOptions rest;
+  GelRecoveryOptions recovery;
   // The paper's working range (Eq. 18): |dx|, |dy| <= 4 mm, dz <= 3 mm,
   // |yaw| <= 15 deg, |pitch|, |roll| <= 40 deg. Beyond it the result says
   // out_of_range; `raw` is clamped to clamp_factor times it.
@@ -89,6 +92,7 @@ class PoseTracker {
   contact::ContactAnalyzer analyzer_;
   pose::SensorSelfModel self_;
   RestKeeper rest_keeper_;
+  GelRecovery recovery_;
   pose::AdaptivePoseEstimator estimator_;
   PoseAccumulator accumulator_;
   std::unique_ptr<InputFilter> filter_;

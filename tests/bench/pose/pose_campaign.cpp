@@ -7,8 +7,12 @@
 //   image level (the first --image-runs seeds whose run has at most
 //     --image-max-frames frames): every frame rendered and processed by the
 //     real front end (pipeline::FrameProcessor), marker RMSE against truth kept.
+// With --world 1 every run draws the world effects too (randomScenario(seed,
+// true): a creeping gel, a camera shift, hidden markers, flicker, drift; each
+// in half the runs) and the last columns give their sizes and the contact
+// events (tests/unit/pose/contact_events.hpp: late contact ends, false onsets).
 // Usage: pose_campaign --out runs.csv [--runs N] [--image-runs M]
-//          [--image-max-frames F] [--first-seed S]
+//          [--image-max-frames F] [--first-seed S] [--world 1] [--gel-recovery 0]
 //        pose_campaign (--trace SEED | --trace-scenario FILE.yaml) [--trace-out frames.csv]
 // (a trace: one run's frames, truth beside estimate, with the truly sticking
 // markers (gt_stick) and how many of them the estimate labels stick (stick_true), at field level with
@@ -17,11 +21,13 @@
 // (field level; a campaign figure, the benchmark is bench_pose).
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
 
 #include "campaign_score.hpp"
+#include "contact_events.hpp"
 #include "observable_truth.hpp"
 #include "core/csv_table.hpp"
 #include "rendered_replay.hpp"
@@ -47,11 +53,15 @@ struct Args {
   double trace_noise_mm = -1;  // < 0: the run's own (the campaign's noise per grey level)
   bool trace_images = false;   // the trace through rendered frames and the real front end
   bool weighted = false;
+  bool world = false;          // the world effects on (sim/random_scenario.hpp: randomScenario(seed, true))
+  bool recovery = true;        // input/gel_recovery.hpp on (off: the contact lasts while the gel recovers)
 };
 
 constexpr const char* kUsage =
     "usage: pose_campaign --out runs.csv [--runs N] [--image-runs M] [--image-max-frames F] [--first-seed S]\n"
     "                     [--parity odd|even|all]  (odd seeds to tune on, even seeds to accept on)\n"
+    "                     [--world 1]  (the world effects on: creep, camera shift, damage, flicker, drift)\n"
+    "                     [--gel-recovery 0]  (without input/gel_recovery.hpp, to compare)\n"
     "                     [--sd-relative F] [--sd-turn DEG_PER_SQRT_S] [--sd-slide MM_PER_SQRT_S]\n"
     "                     (pose::PoseUncertaintyOptions, for tuning the reported sd on the odd seeds)\n"
     "                     [--policy adaptive|weighted]  (the estimator: pose::ModelPolicy; default adaptive)\n"
@@ -92,6 +102,8 @@ Args parse(int argc, char** argv) {
     else if (k == "--trace-out") a.trace_out = v;
     else if (k == "--trace-noise-mm") a.trace_noise_mm = std::stod(v);
     else if (k == "--trace-images") a.trace_images = v == "1";
+    else if (k == "--world") a.world = v == "1";
+    else if (k == "--gel-recovery") a.recovery = v != "0";
     else usageError("unknown option " + k);
   }
   if (a.out.empty() && a.trace < 0 && a.trace_scenario.empty()) usageError("--out is required for a campaign");
@@ -119,11 +131,16 @@ std::vector<std::string> header() {
     for (const char* axis : {"dx", "dy", "dz", "yaw", "pitch", "roll"}) h.push_back(std::string(prefix) + axis);
   h.push_back("sd_frames");
   h.push_back("sd_frames_before_gross_slip");
+  // The world effects' sizes (0 when off) and the contact events (contact_events.hpp).
+  for (const char* c : {"world", "creep_relaxation", "creep_time_s", "shift_px", "hidden_fraction", "flicker",
+                        "exposure_step", "drift_mm", "lift_offs", "late_ends", "worst_end_lag", "false_onsets"})
+    h.push_back(c);
   return h;
 }
 
-std::vector<std::string> row(const char* level, const sim::RandomConditions& c, double noise_mm, const RunScore& s,
-                             double ms, double marker_rmse) {
+std::vector<std::string> row(const char* level, const sim::RandomConditions& c, const sim::WorldEffects& world,
+                             double noise_mm, const RunScore& s, const ContactEvents& events, double ms,
+                             double marker_rmse) {
   std::vector<std::string> r = {level, std::to_string(c.seed), std::string(sim::toString(c.model)), num(c.friction),
                                 num(c.kinetic_ratio), num(c.thickness_mm), num(c.foundation_length_mm),
                                 num(c.marker_depth_mm), std::to_string(c.markers), c.indenter, num(c.noise_grey),
@@ -156,6 +173,20 @@ std::vector<std::string> row(const char* level, const sim::RandomConditions& c, 
   for (double v : s.median_sd_before_gross_slip) r.push_back(num(v));
   r.push_back(std::to_string(s.sd_frames));
   r.push_back(std::to_string(s.sd_frames_before_gross_slip));
+  const sim::WorldEffects& w = world;
+  r.push_back(c.world_effects ? "1" : "0");
+  r.push_back(num(w.viscoelastic.relaxation));
+  r.push_back(num(w.viscoelastic.enabled() ? w.viscoelastic.time_s : 0.0));
+  r.push_back(num(w.camera_shift.shift_px.norm()));
+  r.push_back(num(w.damage.fraction));
+  r.push_back(num(w.light.flicker));
+  r.push_back(num(w.light.exposure_step));
+  // The drift's largest final move of a rest point: its offset plus the strain at the 19.2 mm pad's corner.
+  r.push_back(num(w.drift.offset_mm.norm() + std::abs(w.drift.expansion) * 9.6 * std::sqrt(2.0)));
+  r.push_back(std::to_string(events.end_lag.size()));
+  r.push_back(std::to_string(events.lateEnds()));
+  r.push_back(std::to_string(events.worstEndLag()));
+  r.push_back(std::to_string(events.onsets_untouched));
   return r;
 }
 
@@ -219,7 +250,7 @@ int main(int argc, char** argv) {
   const Args args = parse(argc, argv);
   if (args.trace >= 0 || !args.trace_scenario.empty()) {
     sim::RandomScenario rs;
-    if (args.trace >= 0) rs = sim::randomScenario(static_cast<unsigned>(args.trace));
+    if (args.trace >= 0) rs = sim::randomScenario(static_cast<unsigned>(args.trace), args.world);
     else rs.scenario = sim::loadScenario(args.trace_scenario);
     ReplayOptions o;
     o.noise_mm = kFieldNoisePerGreyMm * rs.conditions.noise_grey;
@@ -243,22 +274,25 @@ int main(int argc, char** argv) {
   for (int i = 0; i < args.runs; ++i) {
     const unsigned seed = args.first_seed + static_cast<unsigned>(i);
     if ((args.parity == "odd" && seed % 2 == 0) || (args.parity == "even" && seed % 2 == 1)) continue;
-    const sim::RandomScenario rs = sim::randomScenario(seed);
+    const sim::RandomScenario rs = sim::randomScenario(seed, args.world);
     ReplayOptions o;
     o.noise_mm = kFieldNoisePerGreyMm * rs.conditions.noise_grey;
     o.seed = seed;
     o.tracker.pose.uncertainty = args.uncertainty;
     if (args.weighted) o.tracker.pose.policy = pose::ModelPolicy::weighted;
+    o.tracker.recovery.enabled = args.recovery;
     double ms = 0;
-    const RunScore s = scoreRun(runField(record(rs.scenario, o), o.tracker, ms));
+    const std::vector<ReplayFrame> field = runField(record(rs.scenario, o), o.tracker, ms);
+    const RunScore s = scoreRun(field);
     diverged += s.judged_diverged ? 1 : 0;
-    out.row(row("field", rs.conditions, o.noise_mm, s, ms, 0));
+    out.row(row("field", rs.conditions, rs.scenario.world, o.noise_mm, s, contactEvents(field), ms, 0));
     if (image_done < args.image_runs && rs.scenario.defaultFrameCount() <= args.image_max_frames) {
       const RenderedReplay rr = replayRendered(rs.scenario);
       const double marker_rmse = std::sqrt((rr.marker_rmse_mm[0] * rr.marker_rmse_mm[0] +
                                             rr.marker_rmse_mm[1] * rr.marker_rmse_mm[1] +
                                             rr.marker_rmse_mm[2] * rr.marker_rmse_mm[2]) / 3.0);
-      out.row(row("image", rs.conditions, marker_rmse, scoreRun(rr.frames), 0, marker_rmse));
+      out.row(row("image", rs.conditions, rs.scenario.world, marker_rmse, scoreRun(rr.frames),
+                  contactEvents(rr.frames), 0, marker_rmse));
       ++image_done;
     }
     std::fprintf(stderr, "\rrun %d/%d, diverged (observable and full) %d, image runs %d", i + 1, args.runs, diverged, image_done);
