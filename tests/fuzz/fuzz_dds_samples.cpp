@@ -7,15 +7,18 @@
 //     (its writer-following topic filter, takeNewest), then what the operator
 //     loop does with a sample (dds/operator_loop.hpp): the dataset's bounds
 //     (haptics/sensed_bounds.hpp) and, for a vector they pass, the kNN render.
-//     A vector that passes must render to a command inside the dataset's
-//     commands' range on every servo, or to none (which the loop refuses);
-//     the sensor name kept for teleop's log must be printable.
+//     A vector that passes must render, at a finite distance, to a command
+//     inside the dataset's commands' range on every servo; the sensor name
+//     kept for teleop's log must be printable and short. A sample Cyclone
+//     accepts but onetip does not decode (not XCDR1: dds/endpoint.hpp) comes
+//     back with no values, refused.
 //   events (rt/<ns>/events, InputEvent): onetip only publishes them; a reader
 //     takes what a peer sends (the decoding a subscriber of onetip's IDL does).
 // The dataset is built in: 3 channels on a 5 x 5 x 5 grid, commands across
 // the servo platform's range (degrees).
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <span>
 
 #include "dds/endpoint.hpp"
@@ -72,9 +75,11 @@ void checkSensed(Consumers& c) {
   dds::SensedSample s;
   if (!c.sensed.takeNewest(s)) return;
   if (!printable(s.sensor) || s.sensor.size() > 4 * dds::kSensorNameMax + 3) __builtin_trap();
+  if (!s.undecodable.empty() && !s.values.empty()) __builtin_trap();
   if (!c.renderer.bounds().refusal(s.values).empty()) return;
   const haptics::RenderResult r = c.renderer.render(s.values.data(), 4);
-  if (!r.found()) return;  // the loop refuses a render without a row
+  // Inside the bounds, standardised distances cannot overflow: a row is found.
+  if (!r.found() || !std::isfinite(r.nearest_distance)) __builtin_trap();
   for (size_t axis = 0; axis < 3; ++axis)
     if (!(r.command[axis] >= c.low[axis] - 1e-3 && r.command[axis] <= c.high[axis] + 1e-3)) __builtin_trap();
 }
