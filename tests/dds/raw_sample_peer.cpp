@@ -14,7 +14,7 @@ namespace {
 
 // The topic's serialisation type, as Cyclone DDS 0.10 exposes it: on a
 // serialized sample a reader takes. So one all-zero sample of our own goes to
-// a reader of our own, made and deleted here (volatile: no later reader sees it).
+// a reader of our own, made and deleted here (a later reader sees it only on a latched stream).
 const ddsi_sertype* topicType(const dds::Participant& p, dds_entity_t topic, dds_entity_t writer,
                               const dds_topic_descriptor_t& type, dds::StreamKind kind) {
   const dds::QosPtr q = dds::readerQos(kind, {});
