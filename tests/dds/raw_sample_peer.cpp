@@ -4,7 +4,6 @@
 #include <dds/ddsi/ddsi_sertype.h>
 #include <unistd.h>
 
-#include <cstddef>
 #include <limits>
 #include <stdexcept>
 #include <vector>
@@ -19,7 +18,7 @@ const ddsi_sertype* topicType(const dds::Participant& p, dds_entity_t topic, dds
                               const dds_topic_descriptor_t& type, dds::StreamKind kind) {
   const dds::QosPtr q = dds::readerQos(kind, {});
   const dds_entity_t reader = dds::checkDds(dds_create_reader(p.handle(), topic, q.get(), nullptr), "raw peer reader");
-  std::vector<std::max_align_t> zero((type.m_size + sizeof(std::max_align_t) - 1) / sizeof(std::max_align_t));
+  std::vector<std::uint64_t> zero((type.m_size + sizeof(std::uint64_t) - 1) / sizeof(std::uint64_t));
   ddsi_serdata* sample = nullptr;
   dds_sample_info_t info{};
   const bool taken = dds_write(writer, zero.data()) == DDS_RETCODE_OK &&

@@ -3,7 +3,7 @@
 #include <dds/ddsi/ddsi_serdata.h>
 
 #include <array>
-#include <cstddef>
+#include <cstdint>
 #include <cstdio>
 #include <vector>
 
@@ -30,7 +30,7 @@ struct TakenSamples {
 class DecodedSample {
  public:
   DecodedSample(const dds_topic_descriptor_t& type, ddsi_serdata* serialized)
-      : type_(type), memory_((type.m_size + sizeof(std::max_align_t) - 1) / sizeof(std::max_align_t)) {
+      : type_(type), memory_((type.m_size + sizeof(std::uint64_t) - 1) / sizeof(std::uint64_t)) {
     ddsi_serdata_to_sample(serialized, memory_.data(), nullptr, nullptr);
   }
   ~DecodedSample() { dds_sample_free(memory_.data(), &type_, DDS_FREE_CONTENTS); }
@@ -40,7 +40,9 @@ class DecodedSample {
 
  private:
   const dds_topic_descriptor_t& type_;
-  std::vector<std::max_align_t> memory_;  // zeroed: the decoder allocates the contents
+  // Zeroed (the decoder allocates the contents), in 8-byte words: the IDL types hold nothing wider. Not
+  // max_align_t: its long double has padding that value-initialisation leaves as it was.
+  std::vector<std::uint64_t> memory_;
 };
 
 dds_entity_t makeTopic(const Participant& p, const dds_topic_descriptor_t& type, const std::string& name) {
