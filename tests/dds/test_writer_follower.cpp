@@ -11,26 +11,33 @@ namespace {
 using namespace onetip;
 using onetip::test_support::inputErrorOf;
 
+std::string noGuid() { return "unknown"; }
+
 TEST(WriterFollower, FollowsTheFirstWriterAndCountsTheOthers) {
   dds::WriterFollower f;
   EXPECT_FALSE(f.following());
-  EXPECT_TRUE(f.admit(11, "biotac_like"));
+  EXPECT_TRUE(f.admit(11));
+  EXPECT_TRUE(f.admit(22)) << "every writer is let in until one is followed";
+  EXPECT_TRUE(f.taken(11, "biotac_like", noGuid));
   EXPECT_TRUE(f.following());
-  EXPECT_FALSE(f.admit(22, "biotac_like")) << "a second writer copying the name";
-  EXPECT_FALSE(f.admit(22, nullptr));
-  EXPECT_TRUE(f.admit(11, "renamed")) << "the followed writer is followed whatever it announces";
+  EXPECT_FALSE(f.taken(22, "biotac_like", noGuid)) << "a second writer copying the name, let in before the choice";
+  EXPECT_FALSE(f.admit(22));
+  EXPECT_TRUE(f.admit(11));
+  EXPECT_TRUE(f.taken(11, "renamed", noGuid)) << "the followed writer is followed whatever it announces";
   EXPECT_EQ(f.ignored(), 2u);
 }
 
 TEST(WriterFollower, NamedSensorIsWaitedForAndOthersBeforeItAreIgnored) {
   dds::WriterFollower f("tip_left");
-  EXPECT_FALSE(f.admit(11, "other"));
-  EXPECT_FALSE(f.admit(12, nullptr));
+  EXPECT_TRUE(f.admit(11));
+  EXPECT_FALSE(f.taken(11, "other", noGuid));
+  EXPECT_FALSE(f.taken(12, nullptr, noGuid)) << "a sample that could not be decoded names no sensor";
   EXPECT_FALSE(f.following());
-  EXPECT_TRUE(f.admit(13, "tip_left"));
-  EXPECT_FALSE(f.admit(14, "tip_left")) << "a later writer announcing the same name";
-  EXPECT_FALSE(f.admit(11, "other"));
-  EXPECT_EQ(f.ignored(), 4u);
+  EXPECT_TRUE(f.taken(13, "tip_left", noGuid));
+  EXPECT_FALSE(f.admit(14)) << "a later writer (announcing the same name or not)";
+  EXPECT_FALSE(f.admit(11));
+  EXPECT_FALSE(f.taken(11, "other", noGuid));
+  EXPECT_EQ(f.ignored(), 5u);
 }
 
 TEST(WriterFollower, TheFollowedWriterIsAnnouncedOnce) {
@@ -41,13 +48,12 @@ TEST(WriterFollower, TheFollowedWriterIsAnnouncedOnce) {
     EXPECT_EQ(w.guid, "110d7d6:589020a3:b7da8088:203");
     EXPECT_EQ(w.sensor, "biotac_like");
   };
-  ASSERT_TRUE(f.admit(11, "biotac_like"));
   int asked = 0;
   for (int i = 0; i < 3; ++i)
-    f.taken("biotac_like", [&] {
+    EXPECT_TRUE(f.taken(11, "biotac_like", [&] {
       ++asked;
       return std::string("110d7d6:589020a3:b7da8088:203");
-    });
+    }));
   EXPECT_EQ(told, 1);
   EXPECT_EQ(asked, 1) << "the GUID is looked up once";
   EXPECT_EQ(f.followed().sensor, "biotac_like");

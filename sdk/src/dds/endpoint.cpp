@@ -1,10 +1,49 @@
 #include "dds/endpoint.hpp"
 
+#include <dds/ddsi/ddsi_serdata.h>
+
+#include <array>
+#include <cstdint>
 #include <cstdio>
 #include <vector>
 
 namespace onetip::dds {
 namespace {
+
+// Plain XCDR1, big or little endian: the first two bytes of the encapsulation (RTPS 2.3, 10.5).
+bool isXcdr1(ddsi_serdata* sample) {
+  std::array<unsigned char, 2> id{};
+  ddsi_serdata_to_ser(sample, 0, id.size(), id.data());
+  return id[0] == 0 && (id[1] == 0 || id[1] == 1);
+}
+
+// The serialized samples dds_takecdr gave, released however take() ends.
+struct TakenSamples {
+  std::vector<ddsi_serdata*> samples;
+  int n = 0;
+  ~TakenSamples() {
+    for (int i = 0; i < n; ++i) ddsi_serdata_unref(samples[static_cast<size_t>(i)]);
+  }
+};
+
+// One decoded sample of `type`, its contents freed at the end.
+class DecodedSample {
+ public:
+  DecodedSample(const dds_topic_descriptor_t& type, ddsi_serdata* serialized)
+      : type_(type), memory_((type.m_size + sizeof(std::uint64_t) - 1) / sizeof(std::uint64_t)) {
+    ddsi_serdata_to_sample(serialized, memory_.data(), nullptr, nullptr);
+  }
+  ~DecodedSample() { dds_sample_free(memory_.data(), &type_, DDS_FREE_CONTENTS); }
+  DecodedSample(const DecodedSample&) = delete;
+  DecodedSample& operator=(const DecodedSample&) = delete;
+  const void* get() const noexcept { return memory_.data(); }
+
+ private:
+  const dds_topic_descriptor_t& type_;
+  // Zeroed (the decoder allocates the contents), in 8-byte words: the IDL types hold nothing wider. Not
+  // max_align_t: its long double has padding that value-initialisation leaves as it was.
+  std::vector<std::uint64_t> memory_;
+};
 
 dds_entity_t makeTopic(const Participant& p, const dds_topic_descriptor_t& type, const std::string& name) {
   return checkDds(dds_create_topic(p.handle(), &type, name.c_str(), nullptr, nullptr), "dds topic " + name);
@@ -40,7 +79,7 @@ int Writer::matchedReaders() const {
 Reader::Reader(const Participant& participant, const dds_topic_descriptor_t& type, const std::string& topic_name,
                StreamKind kind, const StreamQos& qos, double requested_deadline_s,
                std::optional<dds_topic_filter> filter)
-    : name_(topic_name) {
+    : name_(topic_name), type_(type) {
   topic_ = makeTopic(participant, type, name_);
   if (filter) {
     if (const dds_return_t rc = dds_set_topic_filter_extended(topic_, &*filter); rc < 0) {
@@ -68,23 +107,23 @@ Reader::~Reader() {
 }
 
 int Reader::take(const Visit& visit, int max) {
-  std::vector<void*> samples(static_cast<size_t>(max), nullptr);
+  TakenSamples taken;
+  taken.samples.assign(static_cast<size_t>(max), nullptr);
   std::vector<dds_sample_info_t> infos(static_cast<size_t>(max));
-  const dds_return_t n = checkDds(dds_take(reader_, samples.data(), infos.data(), static_cast<size_t>(max),
-                                           static_cast<uint32_t>(max)),
-                                  "dds take on " + name_);
+  taken.n = checkDds(dds_takecdr(reader_, taken.samples.data(), static_cast<uint32_t>(max), infos.data(), DDS_ANY_STATE),
+                     "dds take on " + name_);
   int visited = 0;
-  try {
-    for (dds_return_t i = 0; i < n; ++i)
-      if (infos[static_cast<size_t>(i)].valid_data) {
-        visit(samples[static_cast<size_t>(i)], infos[static_cast<size_t>(i)]);
-        ++visited;
-      }
-  } catch (...) {
-    if (n > 0) dds_return_loan(reader_, samples.data(), n);
-    throw;
+  for (size_t i = 0; i < static_cast<size_t>(taken.n); ++i) {
+    if (!infos[i].valid_data) continue;
+    ++visited;
+    if (!isXcdr1(taken.samples[i])) {
+      ++undecodable_;
+      visit(nullptr, infos[i]);
+      continue;
+    }
+    const DecodedSample sample(type_, taken.samples[i]);
+    visit(sample.get(), infos[i]);
   }
-  if (n > 0) dds_return_loan(reader_, samples.data(), n);
   return visited;
 }
 

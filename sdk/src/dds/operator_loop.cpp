@@ -72,7 +72,9 @@ OperatorLoopStats OperatorLoop::run(double duration_s) {
     const bool taken = input_.takeNewest(sample);
     stats.received += input_.received() - before;
     if (taken) {
-      if (const std::string why = renderer_.bounds().refusal(sample.values); !why.empty()) {
+      const std::string why =
+          sample.undecodable.empty() ? renderer_.bounds().refusal(sample.values) : sample.undecodable;
+      if (!why.empty()) {
         refuse(why, submitted + 1);
         return;
       }

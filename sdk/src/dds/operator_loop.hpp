@@ -6,7 +6,8 @@
 // Per tick:
 //   1. take the newest sensed sample of the one writer the subscriber
 //      follows (dds/writer_follower.hpp; other writers' samples are ignored),
-//      if any; a vector the dataset cannot
+//      if any; a sample it could not decode (an encapsulation other than
+//      XCDR1: dds/endpoint.hpp) or a vector the dataset cannot
 //      answer (haptics/sensed_bounds.hpp: a size other than its channel
 //      count, a NaN or infinite value, or one far outside the dataset's
 //      range) is refused: the device is told an input error (it retracts at
@@ -55,7 +56,7 @@ struct OperatorLoopOptions {
 struct OperatorLoopStats {
   std::uint64_t received = 0;        // sensed samples of the followed writer taken from DDS
   std::uint64_t ignored = 0;         // samples of any other writer (writer_follower.hpp: one writer followed)
-  std::uint64_t refused = 0;         // refused samples (size, non-finite, out of range) and empty renders
+  std::uint64_t refused = 0;         // refused samples (undecodable, size, non-finite, out of range) and empty renders
   std::uint64_t rendered = 0;
   std::uint64_t stalls = 0;          // times the stream went stale (either cause)
   std::uint64_t writers_lost = 0;    // of those, times because no writer was alive any more

@@ -34,18 +34,25 @@ SensedVectorSubscriber::SensedVectorSubscriber(const Participant& p, const std::
 bool SensedVectorSubscriber::takeNewest(SensedSample& out) {
   bool got = false;
   reader_.take([&](const void* sample, const dds_sample_info_t& info) {
-    const auto& s = *static_cast<const onetip_msgs_msg_dds__SensedVector_*>(sample);
-    const std::string sensor = s.sensor ? s.sensor : "";
-    follower_.taken(sensor, [&] { return reader_.writerGuid(info.publication_handle); });
+    const auto* s = static_cast<const onetip_msgs_msg_dds__SensedVector_*>(sample);
+    if (!follower_.taken(info.publication_handle, s ? s->sensor : nullptr,
+                         [&] { return reader_.writerGuid(info.publication_handle); }))
+      return;
     ++received_;
-    if (got && s.serial <= out.sequence) return;
+    if (got && (!out.undecodable.empty() || (s && s->serial <= out.sequence))) return;  // an undecodable one stands
     out.received = std::chrono::steady_clock::now();
     out.latency_ms = static_cast<double>(dds_time() - info.source_timestamp) * 1e-6;
-    out.sequence = s.serial;
-    out.stamp_s = seconds({s.header.stamp.sec, s.header.stamp.nanosec});
-    out.sensor = sensor;
-    out.values.assign(s.values._buffer, s.values._buffer + s.values._length);
     got = true;
+    if (!s) {
+      out.undecodable = "a sensed vector not in XCDR1 (its encapsulation), which onetip does not decode";
+      out.values.clear();
+      return;
+    }
+    out.undecodable.clear();
+    out.sequence = s->serial;
+    out.stamp_s = seconds({s->header.stamp.sec, s->header.stamp.nanosec});
+    out.sensor = shownSensorName(s->sensor);
+    out.values.assign(s->values._buffer, s->values._buffer + s->values._length);
   });
   return got;
 }

@@ -25,8 +25,9 @@ namespace onetip::dds {
 struct SensedSample {
   std::uint64_t sequence = 0;
   double stamp_s = 0;                               // header stamp (the sensor's time)
-  std::string sensor;
+  std::string sensor;                               // as announced, made printable (shownSensorName)
   std::vector<double> values;
+  std::string undecodable;                          // why it could not be decoded (endpoint.hpp; values empty); "" if it was
   std::chrono::steady_clock::time_point received{};
   double latency_ms = 0;                            // reception wall clock - source timestamp
 };
@@ -55,6 +56,8 @@ class SensedVectorSubscriber {
   // Takes what arrived (non-blocking) and returns the newest sample of the
   // followed writer when one came since the last call (older ones taken with
   // it are counted in received(); other writers' in follower().ignored()).
+  // A sample it could not decode (endpoint.hpp) is returned instead, with
+  // `undecodable` set, whatever else came with it: the loop refuses it.
   bool takeNewest(SensedSample& out);
   bool waitForData(double timeout_s) { return reader_.waitForData(timeout_s); }
   std::uint64_t received() const noexcept { return received_; }

@@ -3,24 +3,39 @@
 #include <algorithm>
 
 #include "core/error.hpp"
-#include "onetip_msgs/msg/SensedVector.h"
 
 namespace onetip::dds {
 namespace {
 
-bool admitSensed(const void* sample, const dds_sample_info_t* info, void* arg) {
-  const auto& s = *static_cast<const onetip_msgs_msg_dds__SensedVector_*>(sample);
-  return static_cast<WriterFollower*>(arg)->admit(info->publication_handle, s.sensor);
+bool admitWriter(const dds_sample_info_t* info, void* arg) {
+  return static_cast<WriterFollower*>(arg)->admit(info->publication_handle);
 }
 
 }  // namespace
 
 void validateSensorName(const std::string& name, const std::string& what) {
-  const bool ok = !name.empty() && name.size() <= 64 && std::all_of(name.begin(), name.end(), [](char c) {
+  const bool ok = !name.empty() && name.size() <= kSensorNameMax && std::all_of(name.begin(), name.end(), [](char c) {
     return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' || c == '.' ||
            c == '-';
   });
   if (!ok) throw InputError(what + " '" + name + "': a sensor name is 1 .. 64 characters of [A-Za-z0-9_.-]");
+}
+
+std::string shownSensorName(const char* announced) {
+  if (!announced) return {};
+  std::string shown;
+  std::size_t n = 0;
+  for (; announced[n] && n < kSensorNameMax; ++n) {
+    const auto c = static_cast<unsigned char>(announced[n]);
+    if (c >= 0x20 && c < 0x7f && c != '\\') {
+      shown += static_cast<char>(c);
+    } else {
+      static const char kHex[] = "0123456789abcdef";
+      shown += {'\\', 'x', kHex[c >> 4], kHex[c & 15]};
+    }
+  }
+  if (announced[n]) shown += "...";
+  return shown;
 }
 
 WriterFollower::WriterFollower(std::string sensor) : wanted_(std::move(sensor)) {
@@ -29,32 +44,40 @@ WriterFollower::WriterFollower(std::string sensor) : wanted_(std::move(sensor)) 
 
 dds_topic_filter WriterFollower::topicFilter() {
   dds_topic_filter f{};
-  f.mode = DDS_TOPIC_FILTER_SAMPLE_SAMPLEINFO_ARG;
-  f.f.sample_sampleinfo_arg = admitSensed;
+  f.mode = DDS_TOPIC_FILTER_SAMPLEINFO_ARG;
+  f.f.sampleinfo_arg = admitWriter;
   f.arg = this;
   return f;
 }
 
-bool WriterFollower::admit(dds_instance_handle_t writer, const char* sensor) {
+bool WriterFollower::admit(dds_instance_handle_t writer) {
   const std::lock_guard<std::mutex> lock(mutex_);
-  if (!following_ && (wanted_.empty() || (sensor && wanted_ == sensor))) {
-    following_ = true;
-    writer_ = writer;
-  }
-  if (following_ && writer == writer_) return true;
+  if (!following_ || writer == writer_) return true;
   ++ignored_;
   return false;
 }
 
-void WriterFollower::taken(const std::string& sensor, const std::function<std::string()>& guid_of) {
-  if (announced_) return;
-  announced_ = true;
-  FollowedWriter w{guid_of(), sensor};
-  {
-    const std::lock_guard<std::mutex> lock(mutex_);
-    followed_ = w;
+bool WriterFollower::taken(dds_instance_handle_t writer, const char* sensor,
+                           const std::function<std::string()>& guid_of) {
+  std::unique_lock<std::mutex> lock(mutex_);
+  if (following_) {
+    if (writer == writer_) return true;
+    ++ignored_;  // let in before the choice
+    return false;
   }
+  if (!wanted_.empty() && !(sensor && wanted_ == sensor)) {
+    ++ignored_;
+    return false;
+  }
+  following_ = true;
+  writer_ = writer;
+  lock.unlock();
+  const FollowedWriter w{guid_of(), shownSensorName(sensor)};
+  lock.lock();
+  followed_ = w;
+  lock.unlock();
   if (locked) locked(w);
+  return true;
 }
 
 bool WriterFollower::following() const {

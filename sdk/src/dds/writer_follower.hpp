@@ -12,17 +12,24 @@
 // every writer of the topic, so while an ignored writer lives, the loss of the
 // followed one is noticed by the stale timer alone.
 //
-// The choice is made in a topic filter (Cyclone DDS runs it on its receive
-// threads before a sample enters the reader's history), not when samples are
-// taken: the stream keeps one sample (KEEP_LAST 1), so a faster second writer
-// would otherwise push the followed writer's samples out before the loop took
-// them. This keeps one stream; it proves no identity: a writer started before
-// the real sensor, or announcing its name first, is followed instead. Only DDS
+// The choice is made when a sample is taken (its name is in the sample), and
+// from then on kept in a topic filter on the writer alone (Cyclone DDS runs it
+// on its receive threads before a sample enters the reader's history): the
+// stream keeps one sample (KEEP_LAST 1), so a faster second writer would
+// otherwise push the followed writer's samples out before the loop took them.
+// The filter reads the sample info only: a filter that reads the sample makes
+// Cyclone decode it first, on its receive thread, before onetip can refuse an
+// encapsulation it does not decode (endpoint.hpp). Until the choice is made,
+// every writer's samples enter the history, so a fast writer announcing
+// another name can delay the choice of the named one (not take its place).
+// This keeps one stream; it proves no identity: a writer started before the
+// real sensor, or announcing its name first, is followed instead. Only DDS
 // Security's authentication keeps a stranger out.
 #pragma once
 
 #include <dds/dds.h>
 
+#include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <mutex>
@@ -30,8 +37,18 @@
 
 namespace onetip::dds {
 
-// 1 .. 64 characters of [A-Za-z0-9_.-]; InputError naming `what` otherwise.
+constexpr std::size_t kSensorNameMax = 64;  // characters
+
+// 1 .. kSensorNameMax characters of [A-Za-z0-9_.-]; InputError naming `what` otherwise.
 void validateSensorName(const std::string& name, const std::string& what);
+// The name a sample announces, as onetip shows it (teleop's log, FollowedWriter):
+// any writer on the domain chooses it, so it is made printable and short. Its
+// first kSensorNameMax bytes, each byte outside printable ASCII (control
+// characters such as ESC or a newline, bytes >= 0x7f) and each backslash
+// written as \xNN, then "..." when there were more: at most
+// 4 * kSensorNameMax + 3 characters. A name onetip's publishers send (valid
+// for validateSensorName) is shown unchanged; null is "".
+std::string shownSensorName(const char* announced);
 
 struct FollowedWriter {
   std::string guid;    // the writer's DDS GUID, as Cyclone DDS logs it (4 hex words: participant prefix, entity)
@@ -45,14 +62,16 @@ class WriterFollower {
   WriterFollower(const WriterFollower&) = delete;
   WriterFollower& operator=(const WriterFollower&) = delete;
 
-  // The topic filter that applies it; `this` must outlive the reader made with it.
+  // The topic filter that keeps the choice; `this` must outlive the reader made with it.
   dds_topic_filter topicFilter();
-  // Whether a sample of `writer` announcing `sensor` is let in (any thread).
-  // The first one that qualifies is followed from then on.
-  bool admit(dds_instance_handle_t writer, const char* sensor);
-  // On the reading thread, with each sample taken: the first time, names the
-  // followed writer (guid_of) and tells `locked`, when set.
-  void taken(const std::string& sensor, const std::function<std::string()>& guid_of);
+  // Whether a sample of `writer` is let into the history (any thread): every
+  // one until a writer is followed, then the followed writer's alone.
+  bool admit(dds_instance_handle_t writer);
+  // On the reading thread, with each sample taken (sensor: the name it
+  // announces, null when it could not be decoded): whether it is the followed
+  // writer's. The first sample that qualifies chooses its writer; then
+  // guid_of names it and `locked`, when set, is told.
+  bool taken(dds_instance_handle_t writer, const char* sensor, const std::function<std::string()>& guid_of);
 
   bool following() const;
   FollowedWriter followed() const;
@@ -65,8 +84,7 @@ class WriterFollower {
   bool following_ = false;
   dds_instance_handle_t writer_ = 0;
   std::uint64_t ignored_ = 0;
-  FollowedWriter followed_;   // filled on the reading thread
-  bool announced_ = false;    // the reading thread's only
+  FollowedWriter followed_;
 };
 
 }  // namespace onetip::dds

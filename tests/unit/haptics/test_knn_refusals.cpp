@@ -110,3 +110,27 @@ TEST(SensedBounds, TheRenderersBoundsPassEveryDatasetRow) {
     ASSERT_EQ(renderer.bounds().refusal(s), "") << "row " << r;
   }
 }
+
+// Inside the bounds no standardised distance overflows, even for a dataset at
+// the ends of float32 (bounds beyond what a float holds) or with one outlier
+// among many rows (the smallest sigma for its span): every corner of the
+// bounds renders to a row at a finite distance, inside the commands' range.
+TEST(SensedBounds, EveryVectorInsideTheBoundsRendersAtAFiniteDistance) {
+  TactileDataset d;
+  d.channels = 3;
+  for (int r = 0; r < 20000; ++r)
+    d.append({30.0 + r % 100, 90.0, 150.0}, {r % 2 ? 3.0e38 : -3.0e38, r == 0 ? 1.0 : 0.0, 1000.0 + r % 7});
+  const KnnRenderer renderer(d);
+  const SensedBounds& b = renderer.bounds();
+  ASSERT_GT(b.high(0), 3.4e39) << "ten spans beyond a float's range";
+  for (int corner = 0; corner < 8; ++corner) {
+    std::vector<double> s(3);
+    for (int c = 0; c < 3; ++c) s[static_cast<size_t>(c)] = (corner >> c & 1) ? b.high(c) : b.low(c);
+    ASSERT_EQ(b.refusal(s), "") << "corner " << corner;
+    const RenderResult r = renderer.render(s.data(), 4);
+    ASSERT_TRUE(r.found()) << "corner " << corner;
+    EXPECT_TRUE(std::isfinite(r.nearest_distance)) << "corner " << corner;
+    EXPECT_GE(r.command[0], 30.0);
+    EXPECT_LE(r.command[0], 129.0);
+  }
+}
