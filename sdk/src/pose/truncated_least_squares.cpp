@@ -20,8 +20,7 @@ double gncWeight(double r2, double cbar2, double mu) {
 }
 
 bool gncWeightsBinary(const std::vector<double>& weights, double tolerance) {
-  return std::all_of(weights.begin(), weights.end(),
-                     [&](double w) { return w <= tolerance || w >= 1.0 - tolerance; });
+  return std::all_of(weights.begin(), weights.end(), [&](double w) { return w <= tolerance || w >= 1.0 - tolerance; });
 }
 
 }  // namespace onetip::pose

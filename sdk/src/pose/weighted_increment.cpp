@@ -140,7 +140,8 @@ double truncatedCost(const WeightedIncrementProblem& p, const Eigen::Isometry3d&
     markers += leadsTheFinger(m, e) ? e.squaredNorm() : std::min(e.squaredNorm(), slips);
   }
   double cost = p.markers.empty() ? 0.0 : markers / static_cast<double>(p.markers.size());
-  if (p.footprint) cost += ((dT * p.footprint->carried - p.footprint->seen).head<2>() / p.footprint->sd_mm).squaredNorm();
+  if (p.footprint)
+    cost += ((dT * p.footprint->carried - p.footprint->seen).head<2>() / p.footprint->sd_mm).squaredNorm();
   const Eigen::AngleAxisd turn(dT.linear());
   cost += std::pow(turn.angle() / p.prior_turn_sd_rad, 2) + ((dT * c - c) / p.prior_slide_sd_mm).squaredNorm();
   return cost;

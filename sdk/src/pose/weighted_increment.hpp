@@ -27,14 +27,14 @@
 namespace onetip::pose {
 
 struct WeightedMarker {
-  Eigen::Vector3d anchor;   // a_i carried to frame k-1 (S, mm)
-  Eigen::Vector3d before;   // b_i measured at frame k-1 (S, mm)
-  Eigen::Vector3d now;      // p_i measured (S, mm)
-  Eigen::Vector3d normal;   // unit contact normal at p_i (S); zero: no slip residual
-  double weight = 1;        // w_i in [0, 1]
-  double sd_mm = 0.001;     // s_i: per-axis sd of a sticking marker's residual
-  double on_surface = 1;    // v_i in [0, 1]: the slip residual's weight is (1 - w_i) v_i (a marker the
-                            // finger does not touch is not on its surface)
+  Eigen::Vector3d anchor;              // a_i carried to frame k-1 (S, mm)
+  Eigen::Vector3d before;              // b_i measured at frame k-1 (S, mm)
+  Eigen::Vector3d now;                 // p_i measured (S, mm)
+  Eigen::Vector3d normal;              // unit contact normal at p_i (S); zero: no slip residual
+  double weight = 1;                   // w_i in [0, 1]
+  double sd_mm = 0.001;                // s_i: per-axis sd of a sticking marker's residual
+  double on_surface = 1;               // v_i in [0, 1]: the slip residual's weight is (1 - w_i) v_i (a marker the
+                                       // finger does not touch is not on its surface)
   Eigen::Vector3d from_rest{0, 0, 0};  // unit direction of the marker's displacement from rest (zero: none)
 };
 
@@ -55,8 +55,8 @@ struct WeightedIncrementProblem {
   Eigen::Vector3d centre{0, 0, 0};  // c (S, mm)
   std::vector<WeightedMarker> markers;
   std::optional<FootprintEvidence> footprint;
-  double prior_turn_sd_rad = 0.1;   // s_turn
-  double prior_slide_sd_mm = 1;     // s_slide
+  double prior_turn_sd_rad = 0.1;  // s_turn
+  double prior_slide_sd_mm = 1;    // s_slide
 };
 
 // Gauss-Newton from `initial`; the residuals at the result in `residuals` when given.

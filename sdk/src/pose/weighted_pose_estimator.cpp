@@ -28,7 +28,6 @@ void WeightedPoseEstimator::anchor(int id, const Eigen::Vector3d& p) {
   anchor_[i] = pose_.inverse() * p;
   anchored_at_[i] = p;
   anchored_[i] = 1;
-  frames_in_[i] = 0;
 }
 
 int WeightedPoseEstimator::trackedRegion(const contact::ContactField& field) const {
@@ -51,8 +50,8 @@ PoseStep WeightedPoseEstimator::start(const contact::ContactField& field, const 
   anchored_at_.assign(n, Eigen::Vector3d::Zero());
   anchored_.assign(n, 0);
   weight_.assign(n, 1.0);
-  drift_.assign(n, 0.0);
-  frames_in_.assign(n, 0);
+  drift_mm_.assign(n, 0.0);
+  drift_sd_.assign(n, 1.0);
   active_ = true;
   const contact::ContactRegion& region = field.regions.front();
   c0_ = onsetReferencePoint(field, now, region.markers, region.rest_centroid);
@@ -92,8 +91,9 @@ std::optional<FootprintEvidence> WeightedPoseEstimator::footprint(const contact:
   // A region that grows or a press that deepens moves the footprint centre over the finger: its model
   // error grows without bound as either change approaches macro_size_change of the whole.
   const double size = static_cast<double>(members.size());
-  const double change = std::max(std::abs(size - old.region_size) / old.region_size,
-                                 std::abs(common.depth_after - common.depth_before) / std::max(common.depth_before, 1e-9));
+  const double change =
+      std::max(std::abs(size - old.region_size) / old.region_size,
+               std::abs(common.depth_after - common.depth_before) / std::max(common.depth_before, 1e-9));
   const double trust = 1.0 - change / options_.macro_size_change;
   if (trust <= 0) return std::nullopt;
   f.sd_mm = 0.5 * std::max(t_.macro_drift_mm, options_.macro_drift_ratio * travel.norm()) / trust;
@@ -140,15 +140,13 @@ PoseStep WeightedPoseEstimator::update(const contact::ContactField& field, const
 
   WeightedIncrementProblem problem;
   problem.centre = pose_ * c0_;
-  problem.prior_turn_sd_rad =
-      options_.uncertainty.unseen_turn_deg_per_sqrt_s * kRadPerDeg * std::sqrt(t_.frame_s);
+  problem.prior_turn_sd_rad = options_.uncertainty.unseen_turn_deg_per_sqrt_s * kRadPerDeg * std::sqrt(t_.frame_s);
   problem.prior_slide_sd_mm = options_.uncertainty.unseen_slide_mm_per_sqrt_s * std::sqrt(t_.frame_s);
   std::vector<int> ids;
   for (int id : region.markers) {
     const size_t i = static_cast<size_t>(id);
     if (!anchored_[i] || !now.valid[i] || !before.valid[i]) continue;
-    const Eigen::Vector3d normal =
-        field.normal_valid[i] ? field.normal[i] : Eigen::Vector3d::Zero().eval();
+    const Eigen::Vector3d normal = field.normal_valid[i] ? field.normal[i] : Eigen::Vector3d::Zero().eval();
     // A sticking marker's residual: two measurements' noise, and the marker layer's departure from the
     // finger's rigid motion, a share f of its travel since it was anchored.
     const double travel = options_.uncertainty.relative_increment_error * (now.position[i] - anchored_at_[i]).norm();
@@ -174,8 +172,8 @@ PoseStep WeightedPoseEstimator::update(const contact::ContactField& field, const
   for (size_t k = 0; k < ids.size(); ++k) {
     const size_t i = static_cast<size_t>(ids[k]);
     weight_[i] = problem.markers[k].weight;
-    drift_[i] = (pose_ * anchor_[i] - now.position[i]).norm() / problem.markers[k].sd_mm;
-    ++frames_in_[i];
+    drift_mm_[i] = (pose_ * anchor_[i] - now.position[i]).norm();
+    drift_sd_[i] = problem.markers[k].sd_mm;
   }
   report(now, ids, increment, step);
   // Slipping markers stick again (below); new members are anchored.
@@ -214,16 +212,18 @@ void WeightedPoseEstimator::report(const MarkerField& now, const std::vector<int
     const size_t i = static_cast<size_t>(id);
     const bool sticks = weight_[i] >= 0.5;
     step.labels[i] = sticks ? MarkerLabel::stick : MarkerLabel::slip;
-    step.stick_probability[i] = contact::stickProbability(drift_[i], bound, t_.max_step_mm / t_.noise_mm);
+    // In units of the marker's own sd s_i: the stick component is then a unit Gaussian (bound sqrt(chi2_3)),
+    // the slip component uniform within a frame's largest step.
+    step.stick_probability[i] =
+        contact::stickProbability(drift_mm_[i] / drift_sd_[i], bound, t_.max_step_mm / drift_sd_[i]);
     (sticks ? step.n_stick : step.n_slip)++;
     if (!sticks) continue;
     points.push_back(now.position[i]);
     weights.push_back(step.stick_probability[i]);
-    const double drift_mm = drift_[i] * t_.noise_mm;
-    weighted_square += step.stick_probability[i] * drift_mm * drift_mm;
+    weighted_square += step.stick_probability[i] * drift_mm_[i] * drift_mm_[i];
     total += step.stick_probability[i];
   }
-  step.state = step.n_slip == 0 ? ContactState::stick
+  step.state = step.n_slip == 0    ? ContactState::stick
                : step.n_stick == 0 ? ContactState::slip
                                    : ContactState::partial_slip;
   step.model = step.n_slip == 0 ? PoseModel::kabsch : step.n_stick == 0 ? PoseModel::centroid : PoseModel::stick_slip;

@@ -66,12 +66,12 @@ class WeightedPoseEstimator {
   Eigen::Isometry3d pose_ = Eigen::Isometry3d::Identity();
   Eigen::Isometry3d last_increment_ = Eigen::Isometry3d::Identity();
   Eigen::Vector3d c0_{0, 0, 0};
-  std::vector<Eigen::Vector3d> anchor_;  // per marker id (finger frame = S at onset, mm)
+  std::vector<Eigen::Vector3d> anchor_;       // per marker id (finger frame = S at onset, mm)
   std::vector<Eigen::Vector3d> anchored_at_;  // p_i when anchored (S, mm)
   std::vector<std::uint8_t> anchored_;
   std::vector<double> weight_;           // stick weight at the last frame
-  std::vector<double> drift_;            // |T a_i - p_i| / s_i at the last frame
-  std::vector<int> frames_in_;           // frames since the marker was anchored afresh
+  std::vector<double> drift_mm_;         // |T a_i - p_i| at the last frame (mm)
+  std::vector<double> drift_sd_;         // s_i at the last frame (mm): weighted_increment.hpp
   std::deque<ContactSnapshot> history_;  // newest last
 };
 
