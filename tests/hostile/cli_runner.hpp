@@ -22,6 +22,11 @@
 
 namespace onetip::test_support {
 
+// A shipped touch scenario of the checkout, samples/scenarios/<name>.yaml, absolute.
+inline std::string shippedScenario(const std::string& name) {
+  return (std::filesystem::path(onetip::test::sourceDir()) / "samples/scenarios" / (name + ".yaml")).string();
+}
+
 struct CliRun {
   int exit_code = -1;    // the exit status, or 128 + signal when it was killed by one
   std::string err;       // what it wrote to stderr

@@ -23,8 +23,7 @@ using namespace onetip;
 using namespace onetip::test_support;
 namespace fs = std::filesystem;
 
-const fs::path kSource(onetip::test::sourceDir());
-const std::string kPress = (kSource / "samples/scenarios/press.yaml").string();
+const std::string kPress = shippedScenario("press");
 
 std::vector<std::string> frameColumn(const std::string& csv) {
   std::vector<std::string> frames;

@@ -21,7 +21,7 @@ namespace fs = std::filesystem;
 
 const fs::path kSource(onetip::test::sourceDir());
 const fs::path kCorpus = kSource / "tests/hostile/corpus";
-const std::string kPress = (kSource / "samples/scenarios/press.yaml").string();
+const std::string kPress = shippedScenario("press");
 
 // Four rendered frames of press.yaml with the simulator's calibration and pattern, made once.
 class HostileFiles : public ::testing::Test {
@@ -112,7 +112,7 @@ TEST_F(HostileFiles, MostlyUnreadableFramesFailInEveryCommand) {
 TEST_F(HostileFiles, AFullDiskIsNamedAtTheFrameAndPoseCsvIsKept) {
   const ScratchDir dir("onetip-hostile-full");
   const std::string pose = dir.file("pose.csv"), markers = dir.file("markers.csv");
-  const CliRun r = runCli("process --quiet --input sim:" + (kSource / "samples/scenarios/demo_touch.yaml").string() +
+  const CliRun r = runCli("process --quiet --input sim:" + shippedScenario("demo_touch") +
                               " --out " + pose + " --markers " + markers,
                           err(), {}, 0, fileSizeLimit(32 * 1024));
   EXPECT_EQ(r.exit_code, 1) << r.err;

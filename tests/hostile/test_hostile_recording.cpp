@@ -23,8 +23,7 @@ using namespace onetip::test_support;
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
-const fs::path kSource(onetip::test::sourceDir());
-const std::string kDemo = (kSource / "samples/scenarios/demo_touch.yaml").string();
+const std::string kDemo = shippedScenario("demo_touch");
 
 // The one entry of `dir` whose name starts with `prefix`, or an empty path.
 fs::path entryStartingWith(const fs::path& dir, const std::string& prefix) {

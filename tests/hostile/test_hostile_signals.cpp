@@ -17,8 +17,7 @@ using namespace onetip;
 using namespace onetip::test_support;
 namespace fs = std::filesystem;
 
-const fs::path kSource(onetip::test::sourceDir());
-const std::string kDemo = (kSource / "samples/scenarios/demo_touch.yaml").string();  // 121 frames, ~4 s to render
+const std::string kDemo = shippedScenario("demo_touch");  // 121 frames, ~4 s to render
 
 // Frame numbers 0, 1, 2, ... with no gap and no repeat, and the CONVENTIONS header.
 // An estimate (pose.csv, est_pose.csv) has the sd columns, the simulator's truth (gt_pose.csv) only the nine.

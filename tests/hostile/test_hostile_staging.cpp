@@ -22,8 +22,7 @@ using namespace onetip;
 using namespace onetip::test_support;
 namespace fs = std::filesystem;
 
-const fs::path kSource(onetip::test::sourceDir());
-const std::string kDemo = (kSource / "samples/scenarios/demo_touch.yaml").string();
+const std::string kDemo = shippedScenario("demo_touch");
 
 TEST(HostileStaging, ALiveRunInAnotherPidNamespaceKeepsItsStaging) {
   if (std::system("unshare --pid --fork --mount-proc true >/dev/null 2>&1") != 0)

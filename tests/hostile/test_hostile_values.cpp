@@ -20,8 +20,7 @@ using namespace onetip;
 using namespace onetip::test_support;
 namespace fs = std::filesystem;
 
-const fs::path kSource(onetip::test::sourceDir());
-const std::string kPress = (kSource / "samples/scenarios/press.yaml").string();
+const std::string kPress = shippedScenario("press");
 
 TEST(HostileValues, CollectStepIsBoundedByItsCost) {
   const ScratchDir dir("onetip-hostile-values");
