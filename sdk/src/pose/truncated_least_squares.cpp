@@ -5,8 +5,6 @@
 
 namespace onetip::pose {
 
-double truncationBound2(double sigma_mm, double chi2) { return 2.0 * sigma_mm * sigma_mm * chi2; }
-
 double gncInitialMu(double max_r2, double cbar2) {
   if (max_r2 <= cbar2) return 0.0;
   return cbar2 / (2.0 * max_r2 - cbar2);

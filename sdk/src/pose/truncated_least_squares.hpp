@@ -2,15 +2,15 @@
 // on a truncated least-squares cost (Yang, Antonante, Tzoumas and Carlone,
 // "Graduated non-convexity for robust spatial perception", RA-L 2020).
 //
-// A marker sticks when its residual r_i (mm) against its anchor carried by the
-// motion is measurement noise. The truncated cost rho(r^2) = min(r^2, cbar^2)
-// charges a marker that does not (it slips) a fixed price cbar^2 whatever it
-// does, so sticking markers decide the motion and slipping ones drop out.
-// cbar^2 is the chi-square quantile of a residual made of noise only: an anchor
-// residual is the difference of two measurements of the marker, each with
-// per-axis sd sigma, so r^2 / (2 sigma^2) is chi-square with 3 degrees of
-// freedom; cbar^2 = 2 sigma^2 chi2_3(q). Nothing is tuned: sigma is what the
-// sensor measures at rest (pose/sensor_self_model.hpp), q a false-slip rate.
+// A marker sticks when its residual r_i against its anchor carried by the
+// motion is what a sticking marker shows. The truncated cost rho(r^2) =
+// min(r^2, cbar^2) charges a marker that does not (it slips) a fixed price
+// cbar^2 whatever it does, so sticking markers decide the motion and slipping
+// ones drop out. With r_i in units of a sticking marker's per-axis sd
+// (pose/weighted_increment.hpp: two measurements' noise, which the sensor
+// measures at rest, and the marker layer's share of its travel), r^2 is
+// chi-square with 3 degrees of freedom and cbar^2 = chi2_3(q), q a false-slip
+// rate: nothing is tuned.
 //
 // The truncated cost is not convex. GNC replaces it by the surrogate
 //   rho_mu(r^2) = r^2                                       r^2 <= mu/(mu+1) cbar^2
@@ -26,10 +26,6 @@
 #include <vector>
 
 namespace onetip::pose {
-
-// cbar^2 (mm^2) for an anchor residual of two measurements of per-axis sd sigma_mm, at
-// chi2_3 quantile `chi2` (11.34: 1 % of sticking markers are taken for slipping).
-double truncationBound2(double sigma_mm, double chi2);
 
 // mu_0 for the largest squared residual of the first (all-weights-one) solve; 0 when every
 // residual is already within the bound (nothing to graduate).

@@ -88,10 +88,6 @@ TEST(WeightedIncrement, ResidualsAreReportedInUnitsOfTheirSd) {
   EXPECT_LT(r.stick[0].squaredNorm(), 1.0);
 }
 
-TEST(TruncatedLeastSquares, TheBoundIsTheChiSquareQuantileOfTwoMeasurements) {
-  EXPECT_DOUBLE_EQ(truncationBound2(0.001, 11.34), 2 * 0.001 * 0.001 * 11.34);
-}
-
 TEST(TruncatedLeastSquares, GncWeightsGraduateFromLeastSquaresToTheTruncatedCost) {
   const double c2 = 1.0;
   // mu_0 keeps the largest residual of the first solve inside the surrogate's convex part.
