@@ -57,8 +57,7 @@ PoseStep WeightedPoseEstimator::start(const contact::ContactField& field, const 
   c0_ = onsetReferencePoint(field, now, region.markers, region.rest_centroid);
   for (int id : region.markers)
     if (now.valid[static_cast<size_t>(id)]) anchor(id, now.position[static_cast<size_t>(id)]);
-  history_.push_back({now, field.displacement, region.cut_mm, region.markers, region.footprint_centre, pose_,
-                      static_cast<double>(region.markers.size())});
+  remember(field, now, region);
   uncertainty_.reset(c0_);
   PoseStep step;
   step.active = step.onset = true;
@@ -75,6 +74,13 @@ PoseStep WeightedPoseEstimator::start(const contact::ContactField& field, const 
       ++step.n_stick;
     }
   return step;
+}
+
+void WeightedPoseEstimator::remember(const contact::ContactField& field, const MarkerField& now,
+                                     const contact::ContactRegion& region) {
+  history_.push_back({now, field.displacement, region.cut_mm, region.markers, region.footprint_centre, pose_,
+                      static_cast<double>(region.markers.size())});
+  while (static_cast<int>(history_.size()) > t_.window_frames) history_.pop_front();
 }
 
 std::optional<FootprintEvidence> WeightedPoseEstimator::footprint(const contact::ContactField& field,
@@ -192,9 +198,7 @@ PoseStep WeightedPoseEstimator::update(const contact::ContactField& field, const
       anchored_at_[i] = seen ? old.markers.position[i] : now.position[i];
     }
   }
-  history_.push_back({now, field.displacement, region.cut_mm, region.markers, region.footprint_centre, pose_,
-                      static_cast<double>(region.markers.size())});
-  while (static_cast<int>(history_.size()) > t_.window_frames) history_.pop_front();
+  remember(field, now, region);
   step.increment = increment;
   step.pose = pose_;
   return step;

@@ -52,6 +52,8 @@ class WeightedPoseEstimator {
   PoseStep start(const contact::ContactField& field, const MarkerField& now);
   int trackedRegion(const contact::ContactField& field) const;
   void anchor(int id, const Eigen::Vector3d& p);
+  // This frame kept for the footprint window (the last window_frames frames, newest last).
+  void remember(const contact::ContactField& field, const MarkerField& now, const contact::ContactRegion& region);
   std::optional<FootprintEvidence> footprint(const contact::ContactField& field, const std::vector<int>& members,
                                              const MarkerField& now) const;
   // The increment minimising truncatedCost; the markers' final weights are left in the problem.
