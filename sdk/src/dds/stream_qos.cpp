@@ -38,6 +38,8 @@ void StreamQos::validate() const {
   positive(max_blocking_s, "max_blocking_s");
   if (event_history < 1 || event_history > 100000)
     throw InputError("dds qos event_history: must be 1 .. 100000 (got " + std::to_string(event_history) + ")");
+  if (reader_history < 1 || reader_history > 100000)
+    throw InputError("dds qos reader_history: must be 1 .. 100000 (got " + std::to_string(reader_history) + ")");
 }
 
 dds_duration_t toDuration(double seconds) {
@@ -57,6 +59,7 @@ QosPtr readerQos(StreamKind kind, const StreamQos& q, double requested_deadline_
   // A reader's liveliness lease must be at least the writer's offer: accept any.
   dds_qset_liveliness(qos.get(), DDS_LIVELINESS_AUTOMATIC, DDS_INFINITY);
   dds_qset_deadline(qos.get(), toDuration(requested_deadline_s));
+  if (kind == StreamKind::high_rate) dds_qset_history(qos.get(), DDS_HISTORY_KEEP_LAST, q.reader_history);
   return qos;
 }
 

@@ -2,7 +2,12 @@
 //
 //   high_rate (joy, pose, markers, haptic/sensed): BEST_EFFORT, KEEP_LAST 1,
 //       VOLATILE. A late sample is worth less than the next one, so nothing is
-//       resent or queued. The writer offers a DEADLINE of `deadline_s` (a
+//       resent or queued. A high-rate reader keeps `reader_history` samples
+//       instead of one: its taker takes them all and uses the newest of the
+//       writer it follows (dds/writer_follower.hpp), and until it has chosen,
+//       one slot shared by every writer would let one writer's samples
+//       overwrite another's before they are seen (two writers at the same rate
+//       in step can hide one of them for good). The writer offers a DEADLINE of `deadline_s` (a
 //       reader may request that or longer, and is told when the period passes
 //       without a sample) and AUTOMATIC LIVELINESS with `lease_s`, so readers
 //       learn within that time that the publishing process is gone.
@@ -32,6 +37,7 @@ struct StreamQos {
   double deadline_s = 0.1;       // offered by high-rate writers
   double lease_s = 0.5;          // automatic liveliness lease
   int event_history = 256;       // events: samples kept per writer / reader
+  int reader_history = 64;       // high-rate readers: samples kept between two takes, [1, 100000]
   double max_blocking_s = 0.1;   // events: reliable write blocking limit
   void validate() const;         // throws InputError naming the bad field
 };

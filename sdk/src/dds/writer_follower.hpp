@@ -15,13 +15,14 @@
 // The choice is made when a sample is taken (its name is in the sample), and
 // from then on kept in a topic filter on the writer alone (Cyclone DDS runs it
 // on its receive threads before a sample enters the reader's history): the
-// stream keeps one sample (KEEP_LAST 1), so a faster second writer would
-// otherwise push the followed writer's samples out before the loop took them.
+// reader keeps a bounded history (dds/stream_qos.hpp), so a faster second
+// writer would otherwise push the followed writer's samples out before the
+// loop took them.
 // The filter reads the sample info only: a filter that reads the sample makes
 // Cyclone decode it first, on its receive thread, before onetip can refuse an
 // encapsulation it does not decode (endpoint.hpp). Until the choice is made,
-// every writer's samples enter the history, so a fast writer announcing
-// another name can delay the choice of the named one (not take its place).
+// every writer's samples enter the history, which holds a take period's worth
+// of them, so the first writer to announce the name is the one seen first.
 // This keeps one stream; it proves no identity: a writer started before the
 // real sensor, or announcing its name first, is followed instead. Only DDS
 // Security's authentication keeps a stranger out.
