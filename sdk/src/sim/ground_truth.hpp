@@ -39,6 +39,11 @@ struct GroundTruthFrame {
   int followed = 0;                     // the indenter whose motion `input` is (see above)
 };
 
+// c0: the centroid of the rest positions (S, mm) of the markers whose
+// deformation modulus |deformed - rest| is at least region_fraction of the
+// largest normal deformation |u.z| (zero when none is).
+Eigen::Vector3d onsetCentroid(const MarkerField& rest, const MarkerField& deformed, double region_fraction);
+
 class GroundTruthPose {
  public:
   explicit GroundTruthPose(double contact_threshold_mm = 0.1, double region_fraction = 0.5)

@@ -24,6 +24,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <optional>
 #include <string>
 
 #include "campaign_score.hpp"
@@ -31,6 +32,7 @@
 #include "observable_truth.hpp"
 #include "core/csv_table.hpp"
 #include "rendered_replay.hpp"
+#include "stick_oracle.hpp"
 #include "sim/random_scenario.hpp"
 #include "sim/simulator.hpp"
 
@@ -53,6 +55,7 @@ struct Args {
   double trace_noise_mm = -1;  // < 0: the run's own (the campaign's noise per grey level)
   bool trace_images = false;   // the trace through rendered frames and the real front end
   bool weighted = false;
+  std::optional<OracleLabels> oracle;  // --oracle: stick_oracle.hpp's registration replaces the estimate
   bool world = false;          // the world effects on (sim/random_scenario.hpp: randomScenario(seed, true))
   bool recovery = true;        // input/gel_recovery.hpp on (off: the contact lasts while the gel recovers)
 };
@@ -65,6 +68,9 @@ constexpr const char* kUsage =
     "                     [--sd-relative F] [--sd-turn DEG_PER_SQRT_S] [--sd-slide MM_PER_SQRT_S]\n"
     "                     (pose::PoseUncertaintyOptions, for tuning the reported sd on the odd seeds)\n"
     "                     [--policy adaptive|weighted]  (the estimator: pose::ModelPolicy; default adaptive)\n"
+    "                     [--oracle truth|estimate|estimate-true]  (stick_oracle.hpp: anchors registered with the\n"
+    "                     truth's stick labels, the ceiling; with the policy's own; or with those of its own that\n"
+    "                     are true. The estimate is replaced by the oracle's)\n"
     "       pose_campaign (--trace SEED | --trace-scenario FILE.yaml) [--trace-out frames.csv]\n"
     "                     [--trace-noise-mm SIGMA]  (marker noise per axis; the estimator is told it as its prior)\n"
     "                     [--trace-images 1]  (through rendered frames and the real front end instead)\n";
@@ -95,6 +101,12 @@ Args parse(int argc, char** argv) {
     else if (k == "--policy") {
       if (v != "adaptive" && v != "weighted") usageError("--policy must be adaptive or weighted");
       a.weighted = v == "weighted";
+    }
+    else if (k == "--oracle") {
+      if (v == "truth") a.oracle = OracleLabels::truth;
+      else if (v == "estimate") a.oracle = OracleLabels::estimate;
+      else if (v == "estimate-true") a.oracle = OracleLabels::estimate_true;
+      else usageError("--oracle must be truth, estimate or estimate-true");
     }
     else if (k == "--out") a.out = v;
     else if (k == "--trace") a.trace = std::stol(v);
@@ -261,8 +273,14 @@ int main(int argc, char** argv) {
     }
     if (args.weighted) o.tracker.pose.policy = pose::ModelPolicy::weighted;
     double ms = 0;
-    const auto frames =
-        args.trace_images ? replayRendered(rs.scenario).frames : runField(record(rs.scenario, o), o.tracker, ms);
+    std::vector<ReplayFrame> frames;
+    if (args.trace_images) {
+      frames = replayRendered(rs.scenario).frames;
+    } else {
+      const Recording rec = record(rs.scenario, o);
+      frames = runField(rec, o.tracker, ms);
+      if (args.oracle) applyStickOracle(rec, frames, {o.noise_mm, *args.oracle});
+    }
     writeTrace(frames, args.trace_out);
     const RunScore s = scoreRun(frames);
     std::printf("%s: diverged %d (longest %d from frame %d)\n", rs.scenario.name.c_str(), s.diverged,
@@ -282,7 +300,9 @@ int main(int argc, char** argv) {
     if (args.weighted) o.tracker.pose.policy = pose::ModelPolicy::weighted;
     o.tracker.recovery.enabled = args.recovery;
     double ms = 0;
-    const std::vector<ReplayFrame> field = runField(record(rs.scenario, o), o.tracker, ms);
+    const Recording rec = record(rs.scenario, o);
+    std::vector<ReplayFrame> field = runField(rec, o.tracker, ms);
+    if (args.oracle) applyStickOracle(rec, field, {o.noise_mm, *args.oracle});
     const RunScore s = scoreRun(field);
     diverged += s.judged_diverged ? 1 : 0;
     out.row(row("field", rs.conditions, rs.scenario.world, o.noise_mm, s, contactEvents(field), ms, 0));

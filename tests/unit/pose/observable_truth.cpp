@@ -1,6 +1,10 @@
 #include "observable_truth.hpp"
 
+#include "campaign_score.hpp"
+
 namespace onetip::poseval {
+
+bool everyContactMarkerSlips(const ReplayFrame& f) { return f.gt_contact && countTrulySticking(f) == 0; }
 
 std::vector<Input6> observableTruth(const std::vector<ReplayFrame>& frames) {
   std::vector<Input6> out;
@@ -8,7 +12,7 @@ std::vector<Input6> observableTruth(const std::vector<ReplayFrame>& frames) {
   for (size_t k = 0; k < frames.size(); ++k) {
     const ReplayFrame& f = frames[k];
     const bool continues = k > 0 && f.gt_contact && frames[k - 1].gt_contact;
-    if (!continues || f.gt_state != ContactState::slip) {
+    if (!continues || !everyContactMarkerSlips(f)) {
       Input6 o = f.gt;
       if (continues) {  // the offset left by earlier gross slip, carried
         const Input6& prev_gt = frames[k - 1].gt;

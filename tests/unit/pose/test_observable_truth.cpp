@@ -10,10 +10,14 @@ using namespace onetip::poseval;
 
 namespace {
 
+// Two markers touch: both stick (stick), one slips (partial slip) or both slip (slip).
 ReplayFrame truthFrame(ContactState state, double dx, double yaw, double footprint_x, double dz = 1.0) {
   ReplayFrame f;
   f.gt_contact = true;
   f.gt_state = state;
+  f.gt_contact_markers = {1, 1};
+  f.gt_slip = {static_cast<std::uint8_t>(state == ContactState::slip ? 1 : 0),
+               static_cast<std::uint8_t>(state == ContactState::stick ? 0 : 1)};
   f.gt.dx = dx;
   f.gt.yaw = yaw;
   f.gt.dz = dz;
@@ -55,4 +59,18 @@ TEST(ObservableTruth, ANewContactStartsFromTheTruthAgain) {
   EXPECT_NEAR(o[1].yaw, 0, 1e-12);
   EXPECT_DOUBLE_EQ(o[3].yaw, 0.5);
   EXPECT_DOUBLE_EQ(o[3].dx, 0.2);
+}
+
+TEST(ObservableTruth, AFrameWhereNoMarkerSticksIsUnseenEvenIfTheModelsNodesBetweenThemStick) {
+  std::vector<ReplayFrame> frames = {truthFrame(ContactState::stick, 0.0, 0.0, 0.0),
+                                     truthFrame(ContactState::partial_slip, 0.3, 2.0, 0.1),
+                                     truthFrame(ContactState::stick, 0.4, 2.5, 0.2)};
+  frames[1].gt_slip = {1, 1};  // the contact model's state says partial slip, but every touching marker slips
+  ASSERT_TRUE(everyContactMarkerSlips(frames[1]));
+  ASSERT_FALSE(everyContactMarkerSlips(frames[0]));
+  const std::vector<Input6> o = observableTruth(frames);
+  EXPECT_NEAR(o[1].yaw, 0.0, 1e-12);   // held
+  EXPECT_NEAR(o[1].dx, 0.1, 1e-12);    // the footprint's move
+  EXPECT_NEAR(o[2].yaw, 0.5, 1e-12);   // 2 deg unseen, carried
+  EXPECT_NEAR(o[2].dx, 0.2, 1e-12);
 }

@@ -1,0 +1,96 @@
+#!/usr/bin/python3
+"""What the stick labels cost: the campaign judged against the observable truth, played by each estimator and by
+the stick-label oracle (tests/unit/pose/stick_oracle.hpp; decision record 0018).
+
+Input: the CSVs docs/pose/stick_oracle.sh writes to docs/pose/data/stick_oracle/ (pose_campaign rows, seeds
+1-300, field level). Outputs:
+  stick_oracle.png                  judged-diverged runs per play, odd seeds (tuned on) and even (acceptance);
+                                    and the truth-label oracle's diverged share against the run's peak turn rate
+  data/stick_oracle/summary.csv     the figures decision record 0018 and docs/pose/README.md quote
+Run: /usr/bin/python3 docs/pose/make_stick_oracle_chart.py [data_dir] [out_dir]
+"""
+import csv
+import os
+import statistics
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+AXES = ["dx", "dy", "dz", "yaw", "pitch", "roll"]
+PLAYS = [  # file stem, label
+    ("adaptive", "adaptive\n(default)"),
+    ("adaptive.labels", "oracle with\nadaptive's labels"),
+    ("adaptive.true_labels", "... only its\ntrue ones"),
+    ("weighted", "weighted\n(prototype)"),
+    ("weighted.labels", "oracle with\nweighted's labels"),
+    ("weighted.true_labels", "... only its\ntrue ones"),
+    ("truth", "oracle with\nthe truth's labels"),
+]
+RATE_BINS = [0, 10, 20, 40, 80, 1e9]
+
+
+def rows(path):
+    return [r for r in csv.DictReader(open(path)) if r["level"] == "field"]
+
+
+def parity(rs, odd):
+    return [r for r in rs if (int(r["seed"]) % 2 == 1) == odd]
+
+
+def summary(rs):
+    linear = [r for r in rs if int(r["linear_frames"]) > 0]
+    out = {"runs": len(rs), "judged_diverged": sum(int(r["judged_diverged"]) for r in rs)}
+    for a in AXES:
+        out["median_" + a] = statistics.median(float(r["obs_median_" + a]) for r in linear)
+        out["p95_" + a] = statistics.median(float(r["obs_p95_" + a]) for r in linear)
+    return out
+
+
+def main():
+    data = sys.argv[1] if len(sys.argv) > 1 else os.path.join(HERE, "data", "stick_oracle")
+    out_dir = sys.argv[2] if len(sys.argv) > 2 else HERE
+    plays = {stem: rows(os.path.join(data, stem + ".csv")) for stem, _ in PLAYS}
+    with open(os.path.join(data, "summary.csv"), "w") as f:
+        keys = ["runs", "judged_diverged"] + ["median_" + a for a in AXES] + ["p95_" + a for a in AXES]
+        f.write("play,seeds," + ",".join(keys) + "\n")
+        for stem, _ in PLAYS:
+            for name, odd in (("odd", True), ("even", False)):
+                s = summary(parity(plays[stem], odd))
+                f.write(f"{stem},{name}," + ",".join(f"{s[k]:.4g}" for k in keys) + "\n")
+
+    fig, (ax, ax2) = plt.subplots(1, 2, figsize=(14, 5), gridspec_kw={"width_ratios": [2.2, 1]})
+    x = range(len(PLAYS))
+    for offset, (name, odd, colour) in zip((-0.2, 0.2), (("odd seeds (tuned on)", True, "#9ecae1"),
+                                                        ("even seeds (acceptance)", False, "#08519c"))):
+        counts = [sum(int(r["judged_diverged"]) for r in parity(plays[stem], odd)) for stem, _ in PLAYS]
+        bars = ax.bar([i + offset for i in x], counts, width=0.4, color=colour, label=name)
+        ax.bar_label(bars, fontsize=8)
+    ax.axhline(1.5, color="red", lw=1, ls="--", label="issue 40's target: 1 % of 150")
+    ax.set_xticks(list(x))
+    ax.set_xticklabels([label for _, label in PLAYS], fontsize=8)
+    ax.set_ylabel("runs diverged against the observable truth (of 150)")
+    ax.set_title("Perfect stick labels leave a fifth; false stick labels cost the rest")
+    ax.legend(fontsize=8)
+
+    truth = plays["truth"]
+    shares, labels = [], []
+    for lo, hi in zip(RATE_BINS[:-1], RATE_BINS[1:]):
+        sel = [r for r in truth if lo <= float(r["peak_rate_deg_s"]) < hi]
+        shares.append(100.0 * sum(int(r["judged_diverged"]) for r in sel) / max(1, len(sel)))
+        labels.append(f"{lo:g}-{hi:g}\n({len(sel)} runs)" if hi < 1e9 else f">= {lo:g}\n({len(sel)} runs)")
+    ax2.bar(range(len(shares)), shares, color="#08519c")
+    ax2.set_xticks(range(len(shares)))
+    ax2.set_xticklabels(labels, fontsize=8)
+    ax2.set_xlabel("the run's peak turn rate (deg/s)")
+    ax2.set_ylabel("% of runs diverged, oracle with the truth's labels")
+    ax2.set_title("Where even perfect labels fail (all 300 seeds)")
+    fig.tight_layout()
+    fig.savefig(os.path.join(out_dir, "stick_oracle.png"), dpi=110)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,153 @@
+#include "stick_oracle.hpp"
+
+#include <cmath>
+#include <map>
+#include <optional>
+
+#include "campaign_score.hpp"
+#include "contact/surface_normals.hpp"
+#include "core/rotation.hpp"
+#include "observable_truth.hpp"
+#include "pose/pose_uncertainty.hpp"
+#include "pose/weighted_increment.hpp"
+#include "sim/ground_truth.hpp"
+
+namespace onetip::poseval {
+
+namespace {
+
+// The indenter a marker belongs to: the one whose axis (pose origin, S.xy) is nearest.
+int owner(const sim::GroundTruthFrame& truth, const Eigen::Vector3d& p) {
+  int best = 0;
+  double best_d = 1e300;
+  for (size_t k = 0; k < truth.indenter_poses.size(); ++k) {
+    const double d = (truth.indenter_poses[k].translation().head<2>() - p.head<2>()).squaredNorm();
+    if (d < best_d) {
+      best_d = d;
+      best = static_cast<int>(k);
+    }
+  }
+  return best;
+}
+
+// The footprint's move: the centroid of the markers that touch the finger in
+// both frames (a set that shrinks or grows would move its centroid without
+// any slide), their surface points (S, mm).
+template <typename Touches>
+std::optional<pose::FootprintEvidence> commonFootprint(const MarkerField& before, const MarkerField& now,
+                                                       const Touches& touches, const Eigen::Vector3d& depth,
+                                                       double noise_mm) {
+  Eigen::Vector3d then = Eigen::Vector3d::Zero(), seen = Eigen::Vector3d::Zero();
+  int n = 0;
+  for (size_t i = 0; i < static_cast<size_t>(now.size()); ++i)
+    if (touches(i) && before.valid[i]) {
+      then += before.position[i] + depth;
+      seen += now.position[i] + depth;
+      ++n;
+    }
+  if (n == 0) return std::nullopt;
+  return pose::FootprintEvidence{then / n, seen / n, noise_mm};
+}
+
+bool newContact(const Recording& rec, size_t k, int followed) {
+  const sim::GroundTruthFrame& truth = rec.truth[k];
+  return k == 0 || !rec.truth[k - 1].in_contact || followed != truth.followed ||
+         (static_cast<size_t>(followed) < truth.indenter_nodes.size() &&
+          truth.indenter_nodes[static_cast<size_t>(followed)] == 0);  // it lifted and touched again
+}
+
+}  // namespace
+
+void applyStickOracle(const Recording& rec, std::vector<ReplayFrame>& frames, const StickOracleOptions& options) {
+  const pose::PoseUncertaintyOptions prior;
+  const Eigen::Vector3d depth(0, 0, rec.marker_depth_mm);  // a marker's surface point lies d above it (0003)
+  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();     // the finger since onset (S, mm)
+  Eigen::Vector3d c0 = Eigen::Vector3d::Zero();
+  std::map<size_t, Eigen::Vector3d> anchors;  // marker -> its surface point on the finger (onset coordinates)
+  int followed = -1;
+  std::vector<Eigen::Vector3d> normal;
+  std::vector<std::uint8_t> normal_valid;
+  for (size_t k = 0; k < frames.size() && k < rec.truth.size(); ++k) {
+    const sim::GroundTruthFrame& truth = rec.truth[k];
+    const MarkerField& now = rec.frames[k];
+    ReplayFrame& f = frames[k];
+    const std::vector<std::uint8_t> estimated = f.stick;
+    f.contact = truth.in_contact;
+    f.raw = f.composed = Input6{};
+    f.stick.assign(static_cast<size_t>(now.size()), 0);
+    if (!truth.in_contact) {
+      followed = -1;
+      continue;
+    }
+    const bool onset = newContact(rec, k, followed);
+    if (onset) {
+      T = Eigen::Isometry3d::Identity();
+      anchors.clear();
+      c0 = sim::onsetCentroid(rec.rest, truth.markers, 0.5);
+      followed = truth.followed;
+    }
+    const auto ours = [&](size_t i) {
+      return now.valid[i] && f.gt_contact_markers[i] && owner(truth, truth.markers.position[i]) == followed;
+    };
+    const auto sticks = [&](size_t i) {
+      const bool truly = ours(i) && trulySticks(f, i);
+      const bool labelled = now.valid[i] && i < estimated.size() && estimated[i];
+      switch (options.labels) {
+        case OracleLabels::truth: return truly;
+        case OracleLabels::estimate: return labelled;
+        case OracleLabels::estimate_true: return labelled && truly;
+      }
+      return false;
+    };
+    std::vector<size_t> sticking;
+    for (size_t i = 0; i < static_cast<size_t>(now.size()); ++i)
+      if (sticks(i)) sticking.push_back(i);
+    if (!onset) {
+      const MarkerField& before = rec.frames[k - 1];
+      const ReplayFrame& prev = frames[k - 1];
+      contact::gridSurfaceNormals(now, normal, normal_valid);
+      pose::WeightedIncrementProblem problem;
+      problem.centre = T * c0;
+      const double frame_s = std::max(truth.t - rec.truth[k - 1].t, 1e-4);
+      problem.prior_turn_sd_rad = prior.unseen_turn_deg_per_sqrt_s * kRadPerDeg * std::sqrt(frame_s);
+      problem.prior_slide_sd_mm = prior.unseen_slide_mm_per_sqrt_s * std::sqrt(frame_s);
+      int stuck = 0;
+      for (size_t i = 0; i < static_cast<size_t>(now.size()); ++i) {
+        if (!before.valid[i] || !(ours(i) || sticks(i))) continue;
+        const auto a = anchors.find(i);
+        const bool carries = sticks(i) && a != anchors.end();
+        if (!carries && !normal_valid[i]) continue;
+        pose::WeightedMarker m;
+        m.anchor = carries ? Eigen::Vector3d(T * a->second) : Eigen::Vector3d(before.position[i] + depth);
+        m.before = before.position[i] + depth;
+        m.now = now.position[i] + depth;
+        m.normal = normal_valid[i] ? normal[i] : Eigen::Vector3d::Zero();
+        m.weight = carries ? 1 : 0;
+        m.sd_mm = std::sqrt(2.0) * options.noise_mm;
+        problem.markers.push_back(m);
+        stuck += carries ? 1 : 0;
+      }
+      if (everyContactMarkerSlips(f)) {  // the observable truth's footprint and depth, the turn held
+        if (f.gt_footprint_valid && prev.gt_footprint_valid)
+          T.translation().head<2>() += f.gt_footprint - prev.gt_footprint;
+        T.translation().z() -= f.gt.dz - prev.gt.dz;
+      } else {
+        const auto touched_both = [&](size_t i) {
+          return ours(i) && i < prev.gt_contact_markers.size() && prev.gt_contact_markers[i];
+        };
+        if (stuck == 0) problem.footprint = commonFootprint(before, now, touched_both, depth, options.noise_mm);
+        T = pose::solveWeightedIncrement(problem, Eigen::Isometry3d::Identity(), nullptr, 5) * T;
+      }
+    }
+    std::map<size_t, Eigen::Vector3d> kept;
+    for (size_t i : sticking) {
+      const auto a = anchors.find(i);
+      kept[i] = a != anchors.end() ? a->second : Eigen::Vector3d(T.inverse() * (now.position[i] + depth));
+      f.stick[i] = 1;
+    }
+    anchors.swap(kept);
+    f.raw = f.composed = input6FromMotion(T, c0);
+  }
+}
+
+}  // namespace onetip::poseval

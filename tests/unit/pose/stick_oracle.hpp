@@ -1,0 +1,63 @@
+// tests/unit/pose/stick_oracle.hpp — what issue 40's objective can reach when
+// its stick weights are perfect: the ceiling of registering markers against
+// their anchors, whatever finds the weights.
+//
+// The oracle is told, per frame, which markers truly stick (their node touches
+// the followed indenter and does not slip: campaign_score.hpp's trulySticks)
+// and which touch it and slip, and solves the estimator's own per-frame
+// problem (pose/weighted_increment.hpp) with those weights instead of
+// estimated ones:
+//   - a marker that sticks is anchored on the finger where it first stuck,
+//     a_i = T_j^-1 p_i(j) (T_j the oracle's own pose then: the brush model's
+//     re-anchoring, so a marker that slipped and sticks again gets a new
+//     anchor); it carries the finger (w_i = 1) from the next frame on. The
+//     surface point is registered, the marker plus its depth along S.z
+//     (decision 0003: the marker layer is the finger's motion conjugated by
+//     that offset), so T is the finger's own motion;
+//   - a marker that touches and slips stays on the finger's surface: its
+//     residual along the measured surface normal (contact/surface_normals.hpp;
+//     Eq. 13-15, w_i = 0);
+//   - what those do not fix is held by the estimator's motion prior
+//     (PoseUncertaintyOptions' random walk per frame), as issue 40 item 2 asks;
+//   - where markers stick but none carries the finger yet (each only just
+//     stuck), the footprint, the centroid of the markers that touch the finger
+//     in this frame and the last, carries the slide, as the estimator's own
+//     footprint term;
+//   - where every contact marker slips (observable_truth.hpp) it does what the
+//     observable truth does: the turn held, x and y following the true
+//     footprint's centroid, z the truth's depth, so those frames cost the
+//     oracle nothing.
+// The contact is the truth's; c0 is the truth's rule (sim::onsetCentroid at
+// onset). So what error it leaves comes from the frames where markers stick:
+// their noise and what the sticking and sliding markers do not fix, which no
+// estimator with this objective removes however well it finds the weights.
+// Two fingers: a marker belongs to the indenter whose axis (its pose's origin,
+// S.xy) is nearest.
+#pragma once
+
+#include <vector>
+
+#include "sim_replay.hpp"
+
+namespace onetip::poseval {
+
+// Whose stick labels the oracle registers: the truth's (the ceiling); the
+// estimate's own (frames[k].stick as track() left it: what its labels would
+// give with everything else as the oracle does it); or those of the
+// estimate's labels that are true (its false stick labels removed, its missed
+// ones still missed: what the labels' precision alone costs).
+enum class OracleLabels { truth, estimate, estimate_true };
+
+struct StickOracleOptions {
+  double noise_mm = 0.0006;  // marker noise per axis (mm), as the recording's
+  OracleLabels labels = OracleLabels::truth;
+};
+
+// Where the estimate's labels are used and it labels no marker stick while
+// some truly sticks, the footprint carries the slide as above.
+// Replaces each frame's estimate (contact, raw, composed, stick labels) by the
+// oracle's; the truth fields are kept. `frames` come from track(recording).
+void applyStickOracle(const Recording& recording, std::vector<ReplayFrame>& frames,
+                      const StickOracleOptions& options = {});
+
+}  // namespace onetip::poseval
