@@ -3,11 +3,13 @@
 // good: contact and pose figures within 10 % of the undamaged run". The motion is the world example's slide
 // (tests/data/scenarios/world/damaged_gel.yaml: a press, 3 mm along S.x, a lift), with one listed marker two
 // pitches beside the path, under the footprint's flank, where a sum that skips it pulls the footprint centre
-// sideways while the finger passes (contact/lattice_hole.hpp), and 4.5 % more drawn at random.
+// sideways while the finger passes (contact/lattice_hole.hpp), and 4.5 % more drawn at random. Measured over
+// the 6 draws: translation RMSE 0.95-1.04 of the twin's (0.64-1.42 while the footprint centre skipped holes).
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "replay_metrics.hpp"
@@ -52,6 +54,8 @@ TEST(HiddenMarkers, FivePercentHiddenForGoodKeepTheSlidesTranslationWithinTenPer
     ASSERT_EQ(std::count(hidden.begin(), hidden.end(), first_touch), 0) << "seed " << seed;
     const std::vector<ReplayFrame> frames = replay(damaged);
     const AxisRmse e = axisRmse(frames, composedOf, [](const ReplayFrame&) { return true; });
+    std::printf("seed %u, %zu hidden: translation %.3f of the twin's, dx %.3f, dz %.3f\n", seed, hidden.size(),
+                translationRmse(frames) / twin_translation, e.rmse[0] / whole.rmse[0], e.rmse[2] / whole.rmse[2]);
     EXPECT_GE(e.frames, whole.frames - 1) << "seed " << seed;
     EXPECT_NEAR(translationRmse(frames) / twin_translation, 1.0, 0.1) << "seed " << seed;
     EXPECT_NEAR(e.rmse[0] / whole.rmse[0], 1.0, 0.1) << "dx, seed " << seed;
