@@ -3,9 +3,12 @@
 //
 // The footprint tests (pose/adaptive_pose_estimator.hpp) compare the frame
 // k-w of their window with frame k. Both footprint centres
-// (contact/footprint_centre.hpp) are taken over the same markers: those of
-// either frame's region measured in both frames, so a marker lost or found
-// moves neither centre. Over the same markers, the sums of the normal
+// (contact/footprint_centre.hpp) are taken over the same lattice cells: those
+// of either frame's region measured in both frames, and each cell at or beside
+// them that is not measured in one frame or both (hidden for good, or lost),
+// read in both frames as its neighbours' interpolant (contact/lattice_hole.hpp).
+// A marker lost or found moves neither centre, and a dimple sliding past a
+// hole is not pulled away from it. Over the same cells, the sums of the normal
 // deformation n_i = -u_i.z (mm) say how much deeper the press has become.
 // Positions in the sensor frame S, mm.
 #pragma once

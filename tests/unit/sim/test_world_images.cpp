@@ -127,10 +127,10 @@ TEST(WorldImages, HiddenMarkersAreMissingAndTheOthersKeepTheirIds) {
   Scenario sc = testsupport::sphereScene({{0, -1}, {0.5, 1.5}});
   const MarkerPattern p = sc.pad.pattern;
   sc.world.damage.ids = {p.id(8, 8), p.id(3, 5), p.id(12, 10)};  // one under the finger
-  sc.world.damage.fraction = 0.02;                               // and 6 more at random
-  sc.world.damage.seed = 5;
+  sc.world.damage.fraction = 0.04;                               // and 12 more at random:
+  sc.world.damage.seed = 5;                                      // 15 of 289, issue 38's 5 % and one more
   const std::vector<int> hidden = sc.world.damage.hiddenIds(p);
-  ASSERT_EQ(hidden.size(), 9u);
+  ASSERT_EQ(hidden.size(), 15u);
   Simulator sim(sc);
   const CameraRig rig = CameraRig::fromOptions(sc.camera);
   const vision::CornerDetector detector;
