@@ -5,7 +5,7 @@ the stick-label oracle (tests/unit/pose/stick_oracle.hpp; decision record 0018).
 Input: the CSVs docs/pose/stick_oracle.sh writes to docs/pose/data/stick_oracle/ (pose_campaign rows, seeds
 1-300, field level). Outputs:
   stick_oracle.png                  judged-diverged runs per play, odd seeds (tuned on) and even (acceptance);
-                                    and the truth-label oracle's diverged share against the run's peak turn rate
+                                    and the truth-label oracle's diverged share against the pattern's density
   data/stick_oracle/summary.csv     the figures decision record 0018 and docs/pose/README.md quote
 Run: /usr/bin/python3 docs/pose/make_stick_oracle_chart.py [data_dir] [out_dir]
 """
@@ -30,7 +30,7 @@ PLAYS = [  # file stem, label
     ("weighted.true_labels", "... only its\ntrue ones"),
     ("truth", "oracle with\nthe truth's labels"),
 ]
-RATE_BINS = [0, 10, 20, 40, 80, 1e9]
+DENSITY_BINS = [(9, 11), (13, 15), (17, 19), (21, 25)]  # markers per side
 
 
 def rows(path):
@@ -73,19 +73,20 @@ def main():
     ax.set_xticks(list(x))
     ax.set_xticklabels([label for _, label in PLAYS], fontsize=8)
     ax.set_ylabel("runs diverged against the observable truth (of 150)")
-    ax.set_title("Perfect stick labels leave a fifth; false stick labels cost the rest")
+    ax.set_title("Perfect stick labels leave 7-13 % diverged; the estimators' labels cost the rest")
     ax.legend(fontsize=8)
 
     truth = plays["truth"]
     shares, labels = [], []
-    for lo, hi in zip(RATE_BINS[:-1], RATE_BINS[1:]):
-        sel = [r for r in truth if lo <= float(r["peak_rate_deg_s"]) < hi]
+    for lo, hi in DENSITY_BINS:
+        sel = [r for r in truth if lo <= int(r["markers"]) <= hi]
         shares.append(100.0 * sum(int(r["judged_diverged"]) for r in sel) / max(1, len(sel)))
-        labels.append(f"{lo:g}-{hi:g}\n({len(sel)} runs)" if hi < 1e9 else f">= {lo:g}\n({len(sel)} runs)")
-    ax2.bar(range(len(shares)), shares, color="#08519c")
+        labels.append(f"{lo}-{hi}\n({len(sel)} runs)")
+    bars = ax2.bar(range(len(shares)), shares, color="#08519c")
+    ax2.bar_label(bars, fmt="%.0f %%", fontsize=8)
     ax2.set_xticks(range(len(shares)))
     ax2.set_xticklabels(labels, fontsize=8)
-    ax2.set_xlabel("the run's peak turn rate (deg/s)")
+    ax2.set_xlabel("markers per side of the pattern")
     ax2.set_ylabel("% of runs diverged, oracle with the truth's labels")
     ax2.set_title("Where even perfect labels fail (all 300 seeds)")
     fig.tight_layout()

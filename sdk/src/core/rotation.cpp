@@ -28,6 +28,15 @@ Input6 input6FromMotion(const Eigen::Isometry3d& T, const Eigen::Vector3d& c0) {
   return {d.x(), d.y(), -d.z(), ypr[0] * kDegPerRad, ypr[1] * kDegPerRad, ypr[2] * kDegPerRad};
 }
 
+Eigen::Isometry3d motionFromInput6(const Input6& input, const Eigen::Vector3d& c0) {
+  const Eigen::Matrix3d R =
+      rotationFromYawPitchRoll(input.yaw * kRadPerDeg, input.pitch * kRadPerDeg, input.roll * kRadPerDeg);
+  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+  T.linear() = R;
+  T.translation() = c0 + Eigen::Vector3d(input.dx, input.dy, -input.dz) - R * c0;
+  return T;
+}
+
 Eigen::Isometry3d rigidFromTranslationYawPitchRoll(const Eigen::Vector3d& t, double yaw,
                                                    double pitch, double roll) {
   Eigen::Isometry3d T = Eigen::Isometry3d::Identity();

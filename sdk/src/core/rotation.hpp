@@ -25,6 +25,10 @@ Eigen::Vector3d yawPitchRollFromRotation(const Eigen::Matrix3d& R);
 // The 6-D input vector (angles in degrees) of the motion T at centroid c0.
 Input6 input6FromMotion(const Eigen::Isometry3d& T, const Eigen::Vector3d& c0);
 
+// The inverse of input6FromMotion: the rigid motion whose 6-D input at c0 is
+// `input` (R from its angles, t = c0 + d - R c0 with d = [dx, dy, -dz]).
+Eigen::Isometry3d motionFromInput6(const Input6& input, const Eigen::Vector3d& c0);
+
 // A rigid motion from six pose parameters: translation (mm) and yaw, pitch,
 // roll (radians), applied as X -> R * X + t.
 Eigen::Isometry3d rigidFromTranslationYawPitchRoll(const Eigen::Vector3d& t, double yaw,

@@ -4,32 +4,18 @@
 
 namespace onetip::sim {
 
-Eigen::Vector3d onsetCentroid(const MarkerField& rest, const MarkerField& deformed, double region_fraction) {
-  double max_normal = 0;
-  for (int i = 0; i < rest.size(); ++i)
-    max_normal = std::max(max_normal, std::abs(deformed.position[static_cast<size_t>(i)].z() -
-                                               rest.position[static_cast<size_t>(i)].z()));
-  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-  int n = 0;
+void GroundTruthPose::update(GroundTruthFrame& f, const MarkerField& rest, const MarkerField& deformed) {
+  double max_modulus = 0, max_normal = 0;
   for (int i = 0; i < rest.size(); ++i) {
     const Eigen::Vector3d u = deformed.position[static_cast<size_t>(i)] - rest.position[static_cast<size_t>(i)];
-    if (u.norm() >= region_fraction * max_normal) {
-      sum += rest.position[static_cast<size_t>(i)];
-      ++n;
-    }
+    max_modulus = std::max(max_modulus, u.norm());
+    max_normal = std::max(max_normal, std::abs(u.z()));
   }
-  return n > 0 ? Eigen::Vector3d(sum / n) : Eigen::Vector3d::Zero();
-}
-
-void GroundTruthPose::update(GroundTruthFrame& f, const MarkerField& rest, const MarkerField& deformed) {
-  double max_modulus = 0;
-  for (int i = 0; i < rest.size(); ++i)
-    max_modulus = std::max(max_modulus, (deformed.position[static_cast<size_t>(i)] -
-                                         rest.position[static_cast<size_t>(i)]).norm());
   f.in_contact = max_modulus > threshold_;
   if (!f.in_contact || f.indenter_poses.empty()) {
     active_ = false;
     f.input = Input6{};
+    f.onset_centroid = Eigen::Vector3d::Zero();
     return;
   }
   const auto touching = [&](int k) {
@@ -42,9 +28,19 @@ void GroundTruthPose::update(GroundTruthFrame& f, const MarkerField& rest, const
     for (int k = 1; k < static_cast<int>(f.indenter_poses.size()); ++k)
       if (touching(k) > touching(followed_)) followed_ = k;
     onset_pose_ = f.indenter_poses[static_cast<size_t>(followed_)];
-    c0_ = onsetCentroid(rest, deformed, fraction_);
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    int n = 0;
+    for (int i = 0; i < rest.size(); ++i) {
+      const Eigen::Vector3d u = deformed.position[static_cast<size_t>(i)] - rest.position[static_cast<size_t>(i)];
+      if (u.norm() >= fraction_ * max_normal) {
+        sum += rest.position[static_cast<size_t>(i)];
+        ++n;
+      }
+    }
+    c0_ = n > 0 ? Eigen::Vector3d(sum / n) : Eigen::Vector3d::Zero();
   }
   f.followed = followed_;
+  f.onset_centroid = c0_;
   const Eigen::Isometry3d T = f.indenter_poses[static_cast<size_t>(followed_)] * onset_pose_.inverse();
   f.input = input6FromMotion(T, c0_);
 }

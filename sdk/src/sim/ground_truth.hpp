@@ -31,18 +31,15 @@ struct GroundTruthFrame {
   MarkerField markers;                  // S, mm (all markers valid)
   std::vector<std::uint8_t> contact;    // per marker: its node touches an indenter
   std::vector<std::uint8_t> slip;       // per marker: its node slips
+  std::vector<int> owner;               // per marker: the indenter its node touches (-1: none)
   bool in_contact = false;              // by the SDK's threshold rule
   ContactState state = ContactState::none;
   Input6 input;                         // zero when not in contact
+  Eigen::Vector3d onset_centroid{0, 0, 0};  // c0 of `input` (S, mm); zero when not in contact
   std::vector<Eigen::Isometry3d> indenter_poses;  // S
   std::vector<int> indenter_nodes;      // per indenter: pad nodes it touches
   int followed = 0;                     // the indenter whose motion `input` is (see above)
 };
-
-// c0: the centroid of the rest positions (S, mm) of the markers whose
-// deformation modulus |deformed - rest| is at least region_fraction of the
-// largest normal deformation |u.z| (zero when none is).
-Eigen::Vector3d onsetCentroid(const MarkerField& rest, const MarkerField& deformed, double region_fraction);
 
 class GroundTruthPose {
  public:

@@ -89,6 +89,7 @@ struct Simulator::Impl {
       const auto& c = model->node(node);
       frame.contact[static_cast<size_t>(id)] = c.contact;
       frame.slip[static_cast<size_t>(id)] = c.contact && c.slip;
+      frame.owner[static_cast<size_t>(id)] = c.contact ? c.owner : -1;
     }
     frame.state = model->state();
     frame.indenter_nodes.assign(poses.size(), 0);
@@ -149,6 +150,7 @@ Simulator::Simulator(Scenario scenario, SimulatorOptions options) : impl_(std::m
   m.frame.markers = MarkerField(p);
   m.frame.contact.assign(static_cast<size_t>(p.count()), 0);
   m.frame.slip.assign(static_cast<size_t>(p.count()), 0);
+  m.frame.owner.assign(static_cast<size_t>(p.count()), -1);
   if (m.sc.isCalibration()) {
     m.target_poses = randomTargetPoses(m.sc.target, m.seed);
     m.rest = MarkerField(p);

@@ -52,3 +52,10 @@ TEST(Input6, PressTranslationAndCoupling) {
   EXPECT_NEAR(v.dx, moved.x() - c0.x(), 1e-12);
   EXPECT_NEAR(v.dy, moved.y() - c0.y(), 1e-12);
 }
+
+TEST(Input6, MotionFromInput6InvertsInput6FromMotion) {
+  const Eigen::Vector3d c0(1.0, -2.0, 0.5);
+  const Eigen::Isometry3d T = rigidFromTranslationYawPitchRoll(Eigen::Vector3d(0.3, -0.2, -1.1), 0.4, -0.3, 0.2);
+  const Eigen::Isometry3d back = motionFromInput6(input6FromMotion(T, c0), c0);
+  EXPECT_LT((back.matrix() - T.matrix()).cwiseAbs().maxCoeff(), 1e-12);
+}

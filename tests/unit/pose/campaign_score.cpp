@@ -15,7 +15,8 @@ bool inWorkingRange(const Input6& g) {
 bool inLinearRange(const Input6& g) { return inWorkingRange(g) && std::abs(g.dx) <= 1.5 && std::abs(g.dy) <= 1.5; }
 
 bool trulySticks(const ReplayFrame& f, size_t i) {
-  return i < f.gt_contact_markers.size() && f.gt_contact_markers[i] && !(i < f.gt_slip.size() && f.gt_slip[i]);
+  return i < f.gt_contact_markers.size() && f.gt_contact_markers[i] && !(i < f.gt_slip.size() && f.gt_slip[i]) &&
+         (f.gt_followed.empty() || (i < f.gt_followed.size() && f.gt_followed[i]));
 }
 
 int countTrulySticking(const ReplayFrame& f) {

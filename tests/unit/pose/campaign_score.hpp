@@ -11,9 +11,9 @@
 //   divergence: some axis's error beyond 1 mm or 5 deg in more than
 //     kDivergenceFrames consecutive working-range frames of one contact.
 // Stick labels against the truth, over the contact frames where the estimate
-// tracks: a marker truly sticks when its node touches an indenter and does
-// not slip (the simulator's per-node labels); such markers move rigidly with
-// the finger, so they are the set a stick fit needs.
+// tracks: a marker truly sticks when its node touches the indenter the truth
+// follows and does not slip (the simulator's per-node labels); such markers
+// move rigidly with that finger, so they are the set a stick fit needs.
 //   precision = |labelled stick and truly sticking| / |labelled stick|
 //   recall    = |labelled stick and truly sticking| / |truly sticking|
 // Gross-slip turn: over the frames where the truth is in gross slip (no node
@@ -38,7 +38,7 @@ constexpr double kDivergenceMm = 1.0, kDivergenceDeg = 5.0;
 
 bool inWorkingRange(const Input6& truth);
 bool inLinearRange(const Input6& truth);
-bool trulySticks(const ReplayFrame& frame, size_t marker);     // touches an indenter and does not slip
+bool trulySticks(const ReplayFrame& frame, size_t marker);     // touches the followed indenter, does not slip
 int countTrulySticking(const ReplayFrame& frame);              // markers that truly stick
 int countLabelledTrulySticking(const ReplayFrame& frame);      // ... and are labelled stick by the estimate
 

@@ -1,36 +1,38 @@
 #include "observable_truth.hpp"
 
 #include "campaign_score.hpp"
+#include "core/rotation.hpp"
 
 namespace onetip::poseval {
 
-bool everyContactMarkerSlips(const ReplayFrame& f) { return f.gt_contact && countTrulySticking(f) == 0; }
+bool noMarkerSticksThrough(const ReplayFrame& before, const ReplayFrame& now) {
+  if (!before.gt_contact || !now.gt_contact) return false;
+  for (size_t i = 0; i < now.gt_contact_markers.size(); ++i)
+    if (trulySticks(before, i) && trulySticks(now, i)) return false;
+  return true;
+}
 
 std::vector<Input6> observableTruth(const std::vector<ReplayFrame>& frames) {
   std::vector<Input6> out;
   out.reserve(frames.size());
+  Eigen::Isometry3d reference = Eigen::Isometry3d::Identity();  // the observable finger since onset (S, mm)
   for (size_t k = 0; k < frames.size(); ++k) {
     const ReplayFrame& f = frames[k];
-    const bool continues = k > 0 && f.gt_contact && frames[k - 1].gt_contact;
-    if (!continues || !everyContactMarkerSlips(f)) {
-      Input6 o = f.gt;
-      if (continues) {  // the offset left by earlier gross slip, carried
-        const Input6& prev_gt = frames[k - 1].gt;
-        const Input6& prev = out.back();
-        o = Input6::fromArray({f.gt.dx + prev.dx - prev_gt.dx, f.gt.dy + prev.dy - prev_gt.dy,
-                               f.gt.dz + prev.dz - prev_gt.dz, f.gt.yaw + prev.yaw - prev_gt.yaw,
-                               f.gt.pitch + prev.pitch - prev_gt.pitch, f.gt.roll + prev.roll - prev_gt.roll});
-      }
-      out.push_back(o);
+    const bool continues = k > 0 && f.gt_contact && frames[k - 1].gt_contact && f.gt_c0 == frames[k - 1].gt_c0;
+    if (!continues) {
+      reference = motionFromInput6(f.gt, f.gt_c0);
+      out.push_back(f.gt);
       continue;
     }
-    Input6 o = out.back();  // the turn held
-    if (f.gt_footprint_valid && frames[k - 1].gt_footprint_valid) {
-      o.dx += f.gt_footprint.x() - frames[k - 1].gt_footprint.x();
-      o.dy += f.gt_footprint.y() - frames[k - 1].gt_footprint.y();
+    const ReplayFrame& prev = frames[k - 1];
+    if (noMarkerSticksThrough(prev, f)) {  // the turn held; the footprint's slide and the truth's depth
+      Eigen::Vector3d move(0, 0, -(f.gt.dz - prev.gt.dz));
+      if (f.gt_footprint_valid && prev.gt_footprint_valid) move.head<2>() = f.gt_footprint - prev.gt_footprint;
+      reference.translation() += move;
+    } else {  // the truth's own motion over the interval, so the offset is carried unchanged (on the right)
+      reference = motionFromInput6(f.gt, f.gt_c0) * motionFromInput6(prev.gt, f.gt_c0).inverse() * reference;
     }
-    o.dz += f.gt.dz - frames[k - 1].gt.dz;
-    out.push_back(o);
+    out.push_back(input6FromMotion(reference, f.gt_c0));
   }
   return out;
 }

@@ -47,8 +47,13 @@ ReplayFrame replayFrame(const sim::GroundTruthFrame& f, const input::TrackerResu
   out.gt_contact = f.in_contact;
   out.gt_state = f.state;
   out.gt = f.input;
+  out.gt_c0 = f.onset_centroid;
   out.gt_contact_markers = f.contact;
   out.gt_slip = f.slip;
+  if (f.indenter_poses.size() > 1) {
+    out.gt_followed.assign(f.owner.size(), 0);
+    for (size_t i = 0; i < f.owner.size(); ++i) out.gt_followed[i] = f.owner[i] == f.followed ? 1 : 0;
+  }
   Eigen::Vector2d sum{0, 0};
   int touching = 0;
   for (size_t i = 0; i < f.contact.size() && i < f.markers.position.size(); ++i)

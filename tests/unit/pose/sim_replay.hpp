@@ -34,7 +34,9 @@ struct ReplayFrame {
   bool gt_contact = false;
   ContactState gt_state = ContactState::none;
   Input6 gt;
+  Eigen::Vector3d gt_c0{0, 0, 0};      // the truth's onset centroid c0 (S, mm): gt is its motion read there
   std::vector<std::uint8_t> gt_contact_markers, gt_slip;
+  std::vector<std::uint8_t> gt_followed;  // per marker: its node touches the finger the truth follows (empty: all do)
   Eigen::Vector2d gt_footprint{0, 0};  // S.x, S.y centroid of the markers whose nodes touch (true positions, mm)
   bool gt_footprint_valid = false;     // some marker touches
   // estimate

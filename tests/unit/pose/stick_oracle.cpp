@@ -10,25 +10,10 @@
 #include "observable_truth.hpp"
 #include "pose/pose_uncertainty.hpp"
 #include "pose/weighted_increment.hpp"
-#include "sim/ground_truth.hpp"
 
 namespace onetip::poseval {
 
 namespace {
-
-// The indenter a marker belongs to: the one whose axis (pose origin, S.xy) is nearest.
-int owner(const sim::GroundTruthFrame& truth, const Eigen::Vector3d& p) {
-  int best = 0;
-  double best_d = 1e300;
-  for (size_t k = 0; k < truth.indenter_poses.size(); ++k) {
-    const double d = (truth.indenter_poses[k].translation().head<2>() - p.head<2>()).squaredNorm();
-    if (d < best_d) {
-      best_d = d;
-      best = static_cast<int>(k);
-    }
-  }
-  return best;
-}
 
 // The footprint's move: the centroid of the markers that touch the finger in
 // both frames (a set that shrinks or grows would move its centroid without
@@ -49,22 +34,13 @@ std::optional<pose::FootprintEvidence> commonFootprint(const MarkerField& before
   return pose::FootprintEvidence{then / n, seen / n, noise_mm};
 }
 
-bool newContact(const Recording& rec, size_t k, int followed) {
-  const sim::GroundTruthFrame& truth = rec.truth[k];
-  return k == 0 || !rec.truth[k - 1].in_contact || followed != truth.followed ||
-         (static_cast<size_t>(followed) < truth.indenter_nodes.size() &&
-          truth.indenter_nodes[static_cast<size_t>(followed)] == 0);  // it lifted and touched again
-}
-
 }  // namespace
 
 void applyStickOracle(const Recording& rec, std::vector<ReplayFrame>& frames, const StickOracleOptions& options) {
   const pose::PoseUncertaintyOptions prior;
   const Eigen::Vector3d depth(0, 0, rec.marker_depth_mm);  // a marker's surface point lies d above it (0003)
   Eigen::Isometry3d T = Eigen::Isometry3d::Identity();     // the finger since onset (S, mm)
-  Eigen::Vector3d c0 = Eigen::Vector3d::Zero();
   std::map<size_t, Eigen::Vector3d> anchors;  // marker -> its surface point on the finger (onset coordinates)
-  int followed = -1;
   std::vector<Eigen::Vector3d> normal;
   std::vector<std::uint8_t> normal_valid;
   for (size_t k = 0; k < frames.size() && k < rec.truth.size(); ++k) {
@@ -75,19 +51,15 @@ void applyStickOracle(const Recording& rec, std::vector<ReplayFrame>& frames, co
     f.contact = truth.in_contact;
     f.raw = f.composed = Input6{};
     f.stick.assign(static_cast<size_t>(now.size()), 0);
-    if (!truth.in_contact) {
-      followed = -1;
-      continue;
-    }
-    const bool onset = newContact(rec, k, followed);
+    if (!truth.in_contact) continue;
+    const bool onset = k == 0 || !frames[k - 1].gt_contact || f.gt_c0 != frames[k - 1].gt_c0;  // the truth's onset
     if (onset) {
       T = Eigen::Isometry3d::Identity();
       anchors.clear();
-      c0 = sim::onsetCentroid(rec.rest, truth.markers, 0.5);
-      followed = truth.followed;
     }
+    const Eigen::Vector3d& c0 = f.gt_c0;
     const auto ours = [&](size_t i) {
-      return now.valid[i] && f.gt_contact_markers[i] && owner(truth, truth.markers.position[i]) == followed;
+      return now.valid[i] && f.gt_contact_markers[i] && (f.gt_followed.empty() || f.gt_followed[i]);
     };
     const auto sticks = [&](size_t i) {
       const bool truly = ours(i) && trulySticks(f, i);
@@ -127,7 +99,7 @@ void applyStickOracle(const Recording& rec, std::vector<ReplayFrame>& frames, co
         problem.markers.push_back(m);
         stuck += carries ? 1 : 0;
       }
-      if (everyContactMarkerSlips(f)) {  // the observable truth's footprint and depth, the turn held
+      if (noMarkerSticksThrough(prev, f)) {  // the observable truth's footprint and depth, the turn held
         if (f.gt_footprint_valid && prev.gt_footprint_valid)
           T.translation().head<2>() += f.gt_footprint - prev.gt_footprint;
         T.translation().z() -= f.gt.dz - prev.gt.dz;

@@ -3,7 +3,7 @@
 // their anchors, whatever finds the weights.
 //
 // The oracle is told, per frame, which markers truly stick (their node touches
-// the followed indenter and does not slip: campaign_score.hpp's trulySticks)
+// the followed finger and does not slip: campaign_score.hpp's trulySticks)
 // and which touch it and slip, and solves the estimator's own per-frame
 // problem (pose/weighted_increment.hpp) with those weights instead of
 // estimated ones:
@@ -19,20 +19,18 @@
 //     Eq. 13-15, w_i = 0);
 //   - what those do not fix is held by the estimator's motion prior
 //     (PoseUncertaintyOptions' random walk per frame), as issue 40 item 2 asks;
-//   - where markers stick but none carries the finger yet (each only just
-//     stuck), the footprint, the centroid of the markers that touch the finger
-//     in this frame and the last, carries the slide, as the estimator's own
-//     footprint term;
-//   - where every contact marker slips (observable_truth.hpp) it does what the
-//     observable truth does: the turn held, x and y following the true
-//     footprint's centroid, z the truth's depth, so those frames cost the
-//     oracle nothing.
-// The contact is the truth's; c0 is the truth's rule (sim::onsetCentroid at
-// onset). So what error it leaves comes from the frames where markers stick:
+//   - over an interval in which no marker sticks in both frames
+//     (observable_truth.hpp) it does what the observable truth does: the turn
+//     held, x and y following the true footprint's centroid, z the truth's
+//     depth, so those intervals cost the oracle nothing;
+//   - with the estimate's labels, where it labels no marker that stuck in the
+//     last frame too while some truly does, the footprint (the centroid of the
+//     markers that touch the finger in this frame and the last) carries the
+//     slide, as the estimator's own footprint term.
+// The contact, its onset and c0 are the truth's. So what error it leaves comes from the frames where markers stick:
 // their noise and what the sticking and sliding markers do not fix, which no
 // estimator with this objective removes however well it finds the weights.
-// Two fingers: a marker belongs to the indenter whose axis (its pose's origin,
-// S.xy) is nearest.
+// Two fingers: only the markers whose nodes touch the followed finger count.
 #pragma once
 
 #include <vector>
@@ -53,8 +51,6 @@ struct StickOracleOptions {
   OracleLabels labels = OracleLabels::truth;
 };
 
-// Where the estimate's labels are used and it labels no marker stick while
-// some truly sticks, the footprint carries the slide as above.
 // Replaces each frame's estimate (contact, raw, composed, stick labels) by the
 // oracle's; the truth fields are kept. `frames` come from track(recording).
 void applyStickOracle(const Recording& recording, std::vector<ReplayFrame>& frames,
