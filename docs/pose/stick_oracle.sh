@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # What the stick labels cost (tests/unit/pose/stick_oracle.hpp, decision record 0018): the campaign's 300
-# field runs played by each estimator as it is, and by the stick-label oracle registering the truth's labels,
-# the estimator's own, and those of its own that are true. Writes one CSV per play to
+# field runs played by each estimator as it is, and by the stick-label oracle registering the truth's labels
+# (with and without the sliding markers' normal residuals), the estimator's own, and those of its own that
+# are true. Writes one CSV per play to
 # docs/pose/data/stick_oracle/ and the summary chart with make_stick_oracle_chart.py.
 # Usage: docs/pose/stick_oracle.sh [path/to/pose_campaign]   (about 10 minutes on one core)
 set -euo pipefail
@@ -10,6 +11,7 @@ campaign=${1:-build/bench/pose_campaign}
 out=docs/pose/data/stick_oracle
 mkdir -p "$out"
 "$campaign" --runs 300 --oracle truth --out "$out/truth.csv"
+"$campaign" --runs 300 --oracle truth --oracle-slip-normals 0 --out "$out/truth.no_slip_normals.csv"
 for policy in adaptive weighted; do
   "$campaign" --runs 300 --policy "$policy" --out "$out/$policy.csv"
   "$campaign" --runs 300 --policy "$policy" --oracle estimate --out "$out/$policy.labels.csv"

@@ -56,6 +56,7 @@ struct Args {
   bool trace_images = false;   // the trace through rendered frames and the real front end
   bool weighted = false;
   std::optional<OracleLabels> oracle;  // --oracle: stick_oracle.hpp's registration replaces the estimate
+  bool oracle_slip_normals = true;     // --oracle-slip-normals 0: StickOracleOptions::slip_normals off
   bool world = false;          // the world effects on (sim/random_scenario.hpp: randomScenario(seed, true))
   bool recovery = true;        // input/gel_recovery.hpp on (off: the contact lasts while the gel recovers)
 };
@@ -71,6 +72,7 @@ constexpr const char* kUsage =
     "                     [--oracle truth|estimate|estimate-true]  (stick_oracle.hpp: anchors registered with the\n"
     "                     truth's stick labels, the ceiling; with the policy's own; or with those of its own that\n"
     "                     are true. The estimate is replaced by the oracle's)\n"
+    "                     [--oracle-slip-normals 0]  (the oracle without the sliding markers' normal residuals)\n"
     "       pose_campaign (--trace SEED | --trace-scenario FILE.yaml) [--trace-out frames.csv]\n"
     "                     [--trace-noise-mm SIGMA]  (marker noise per axis; the estimator is told it as its prior)\n"
     "                     [--trace-images 1]  (through rendered frames and the real front end instead)\n";
@@ -108,6 +110,7 @@ Args parse(int argc, char** argv) {
       else if (v == "estimate-true") a.oracle = OracleLabels::estimate_true;
       else usageError("--oracle must be truth, estimate or estimate-true");
     }
+    else if (k == "--oracle-slip-normals") a.oracle_slip_normals = v != "0";
     else if (k == "--out") a.out = v;
     else if (k == "--trace") a.trace = std::stol(v);
     else if (k == "--trace-scenario") a.trace_scenario = v;
@@ -279,7 +282,7 @@ int main(int argc, char** argv) {
     } else {
       const Recording rec = record(rs.scenario, o);
       frames = runField(rec, o.tracker, ms);
-      if (args.oracle) applyStickOracle(rec, frames, {o.noise_mm, *args.oracle});
+      if (args.oracle) applyStickOracle(rec, frames, {o.noise_mm, *args.oracle, args.oracle_slip_normals});
     }
     writeTrace(frames, args.trace_out);
     const RunScore s = scoreRun(frames);
@@ -302,7 +305,7 @@ int main(int argc, char** argv) {
     double ms = 0;
     const Recording rec = record(rs.scenario, o);
     std::vector<ReplayFrame> field = runField(rec, o.tracker, ms);
-    if (args.oracle) applyStickOracle(rec, field, {o.noise_mm, *args.oracle});
+    if (args.oracle) applyStickOracle(rec, field, {o.noise_mm, *args.oracle, args.oracle_slip_normals});
     const RunScore s = scoreRun(field);
     diverged += s.judged_diverged ? 1 : 0;
     out.row(row("field", rs.conditions, rs.scenario.world, o.noise_mm, s, contactEvents(field), ms, 0));

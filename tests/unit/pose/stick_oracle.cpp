@@ -88,7 +88,7 @@ void applyStickOracle(const Recording& rec, std::vector<ReplayFrame>& frames, co
         if (!before.valid[i] || !(ours(i) || sticks(i))) continue;
         const auto a = anchors.find(i);
         const bool carries = sticks(i) && a != anchors.end();
-        if (!carries && !normal_valid[i]) continue;
+        if (!carries && (!normal_valid[i] || !options.slip_normals)) continue;
         pose::WeightedMarker m;
         m.anchor = carries ? Eigen::Vector3d(T * a->second) : Eigen::Vector3d(before.position[i] + depth);
         m.before = before.position[i] + depth;

@@ -16,7 +16,7 @@
 //     that offset), so T is the finger's own motion;
 //   - a marker that touches and slips stays on the finger's surface: its
 //     residual along the measured surface normal (contact/surface_normals.hpp;
-//     Eq. 13-15, w_i = 0);
+//     Eq. 13-15, w_i = 0), unless options.slip_normals is off;
 //   - what those do not fix is held by the estimator's motion prior
 //     (PoseUncertaintyOptions' random walk per frame), as issue 40 item 2 asks;
 //   - over an interval in which no marker sticks in both frames
@@ -49,6 +49,10 @@ enum class OracleLabels { truth, estimate, estimate_true };
 struct StickOracleOptions {
   double noise_mm = 0.0006;  // marker noise per axis (mm), as the recording's
   OracleLabels labels = OracleLabels::truth;
+  // The sliding markers' normal residuals on (Eq. 13-15) or off. They fix a tilt that one to four sticking
+  // markers cannot, but the lattice normal at a contact's edge is not the finger's (the marker layer bends
+  // there), so where the sticking markers fix the motion alone they bias it (decision record 0018).
+  bool slip_normals = true;
 };
 
 // Replaces each frame's estimate (contact, raw, composed, stick labels) by the
