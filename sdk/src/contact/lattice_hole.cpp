@@ -13,7 +13,8 @@ bool latticeInterpolant(int rows, int cols, int id, const std::vector<Eigen::Vec
   };
   out = LatticeSample{};
   int pairs = 0;
-  for (const auto& [dr, dc] : {std::pair{0, 1}, std::pair{1, 0}}) {
+  for (const auto& step : {std::pair{0, 1}, std::pair{1, 0}}) {
+    const int dr = step.first, dc = step.second;  // a lambda may not capture a structured binding before clang 16
     if (!measuredAt(r - dr, c - dc) || !measuredAt(r + dr, c + dc)) continue;
     auto at = [&](int k) { return static_cast<size_t>((r + k * dr) * cols + c + k * dc); };
     // Cubic through the four neighbours -2, -1, +1, +2 where all are measured: weights (-1, 4, 4, -1) / 6.
