@@ -56,7 +56,8 @@ void GelCreepOptions::validate() const {
 }
 
 CreepWindow creepWindow(const std::vector<std::vector<Eigen::Vector3d>>& u, size_t first, size_t m,
-                        const std::vector<std::uint8_t>& valid, double noise_mm, double false_alarm) {
+                        const std::vector<std::uint8_t>& valid, double noise_mm, double fit_sigmas,
+                        double false_alarm) {
   CreepWindow out;
   if (!(noise_mm > 0) || m < 1 || first + 2 * m >= u.size()) return out;
   const auto& a = u[first];
@@ -81,7 +82,8 @@ CreepWindow creepWindow(const std::vector<std::vector<Eigen::Vector3d>>& u, size
   out.markers = n;
   out.rho = dd2 / dd;
   out.rho_sd = noise_mm * std::sqrt(1 + (1 + out.rho) * (1 + out.rho) + out.rho * out.rho) / std::sqrt(dd);
-  if (!(out.rho > 0 && out.rho < 1)) return out;
+  if (!(out.rho > fit_sigmas * out.rho_sd && out.rho < 1 - fit_sigmas * out.rho_sd)) return out;
+  out.shrinking = true;
   // Every frame j after A on the exponential through A and B: u_j = (1 - w_j) A + w_j B,
   // w_j = (1 - q^(j - first)) / (1 - q^m), q = rho^(1/m).
   const double q = std::pow(out.rho, 1.0 / static_cast<double>(m));
@@ -93,8 +95,12 @@ CreepWindow creepWindow(const std::vector<std::vector<Eigen::Vector3d>>& u, size
       if (valid[i]) worst = std::max(worst, (u[j][i] - (1 - w) * a[i] - w * b[i]).norm() / s);
     return worst;
   };
-  for (size_t j = first + 1; j <= first + 2 * m; ++j)
+  // C first, then the frames between; the first beyond the window's bound ends the test.
+  const double window_bound = noiseMaximum(n * static_cast<int>(2 * m - 1), false_alarm);
+  for (size_t j = first + 2 * m; j > first && out.worst_sigmas <= window_bound; --j)
     if (j != first + m) out.worst_sigmas = std::max(out.worst_sigmas, off(j));
+  out.exponential = out.worst_sigmas <= window_bound;
+  if (!out.exponential) return out;
   // Backwards from A while the frames stay on the same exponential (within the bound one frame's noise passes).
   const double bound = noiseMaximum(n, false_alarm);
   out.start = first;
@@ -168,10 +174,8 @@ bool GelCreep::identify(double noise_mm) {
   for (size_t m = 2; 2 * m <= n; m = std::max(m + 1, m * 5 / 4)) lengths.push_back(m);
   for (auto it = lengths.rbegin(); it != lengths.rend(); ++it) {
     const size_t m = *it;
-    const CreepWindow w = creepWindow(history_, n - 2 * m, m, history_valid_, noise_mm, options_.false_alarm);
-    if (!w.measured || w.rho <= k * w.rho_sd || w.rho >= 1 - k * w.rho_sd ||
-        w.worst_sigmas > noiseMaximum(w.markers * static_cast<int>(2 * m - 1), options_.false_alarm))
-      continue;
+    const CreepWindow w = creepWindow(history_, n - 2 * m, m, history_valid_, noise_mm, k, options_.false_alarm);
+    if (!w.exponential) continue;
     // The hold: from the frame the finger stopped (the frame before is off the exponential by more than
     // stop_factor x fit_sigmas) to now, its time course shown over at least one time constant.
     const size_t h = w.start;

@@ -86,12 +86,16 @@ struct GelCreepOptions {
   void validate() const;       // throws InputError naming the bad field
 };
 
-// One window of three fields under the test above (exposed for tests and tools).
+// One window of three fields under the test above (exposed for tests and tools). Each step is taken only when
+// the one before passed: the frames' residuals when shrinking, the frames before A when exponential.
 struct CreepWindow {
   bool measured = false;     // enough markers and an increment to scale
   double rho = 0;            // least-squares scale of the first increment onto the second
   double rho_sd = 0;         // its standard deviation
+  bool shrinking = false;    // rho within (0, 1) by more than fit_sigmas of its sd
   double worst_sigmas = 0;   // the largest residual of a frame after A off the exponential, in units of its sd
+                             // (from C backwards, up to the first beyond the window's noise bound)
+  bool exponential = false;  // shrinking, and every frame after A within the window's noise bound
   int markers = 0;           // markers in the fit
   size_t start = 0;          // the earliest frame from which every frame up to A is on the same exponential
   double before_sigmas = 0;  // the frame before `start` off it, in units of its sd (0 when start is 0)
@@ -99,7 +103,8 @@ struct CreepWindow {
 
 // The window of fields u[first .. first + 2m] (u_j = p_j - rest, S, mm), over the markers `valid`.
 CreepWindow creepWindow(const std::vector<std::vector<Eigen::Vector3d>>& u, size_t first, size_t m,
-                        const std::vector<std::uint8_t>& valid, double noise_mm, double false_alarm);
+                        const std::vector<std::uint8_t>& valid, double noise_mm, double fit_sigmas,
+                        double false_alarm);
 
 class GelCreep {
  public:

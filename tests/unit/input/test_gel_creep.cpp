@@ -71,18 +71,21 @@ TEST(GelCreep, TheMarkersTellAHeldCreepFromAFingerPressingDeeper) {
   const auto deeper = measuredFields(deeperOnAnElasticPad());
   const std::vector<std::uint8_t> all(creep[0].size(), 1);
   for (size_t m : {4, 8, 16, 32}) {
-    const CreepWindow c = creepWindow(creep, 30, m, all, kNoiseMm, 1e-3);
-    const CreepWindow d = creepWindow(deeper, 30, m, all, kNoiseMm, 1e-3);
-    ASSERT_TRUE(c.measured && d.measured);
+    const CreepWindow c = creepWindow(creep, 30, m, all, kNoiseMm, GelCreepOptions{}.fit_sigmas, 1e-3);
+    const CreepWindow d = creepWindow(deeper, 30, m, all, kNoiseMm, GelCreepOptions{}.fit_sigmas, 1e-3);
+    ASSERT_TRUE(c.shrinking && d.shrinking) << "m " << m;  // both decay: the time course alone does not tell
     const double bound = noiseMaximum(c.markers * static_cast<int>(2 * m - 1), 1e-3);
+    EXPECT_TRUE(c.exponential) << "m " << m;
     EXPECT_LT(c.worst_sigmas, bound) << "m " << m;
+    EXPECT_FALSE(d.exponential) << "m " << m;
     EXPECT_GT(d.worst_sigmas, bound) << "m " << m;
     EXPECT_EQ(c.start, 30u) << "m " << m;
     EXPECT_GT(c.before_sigmas, GelCreepOptions{}.stop_factor * GelCreepOptions{}.fit_sigmas) << "m " << m;
   }
   // Later in the deeper press the depth changes too little within a window for its curve to show: its window
   // is an exponential within the noise too, but it has no frame where a finger stopped before it.
-  const CreepWindow tail = creepWindow(deeper, 45, 8, all, kNoiseMm, 1e-3);
+  const CreepWindow tail = creepWindow(deeper, 45, 8, all, kNoiseMm, GelCreepOptions{}.fit_sigmas, 1e-3);
+  EXPECT_TRUE(tail.exponential);
   EXPECT_LT(tail.worst_sigmas, noiseMaximum(tail.markers * 15, 1e-3));
   EXPECT_LT(tail.before_sigmas, GelCreepOptions{}.stop_factor * GelCreepOptions{}.fit_sigmas);
 }
