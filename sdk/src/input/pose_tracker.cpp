@@ -17,6 +17,7 @@ void PoseTrackerOptions::validate() const {
   press.validate();
   rest.validate();
   recovery.validate();
+  creep.validate();
   for (double r : working_range) requireAbove("pose tracker: working_range entries", r, 0);
   requireAtLeast("pose tracker: clamp_factor", clamp_factor, 1);
   requireInRange("pose tracker: marker_depth_mm", marker_depth_mm, 0, MarkerPattern::kMaxMarkerDepthMm, "mm");
@@ -28,6 +29,7 @@ PoseTracker::PoseTracker(PoseTrackerOptions options)
       self_(options_.pose.self),
       rest_keeper_(options_.rest),
       recovery_(options_.recovery),
+      creep_(options_.creep),
       estimator_(options_.pose),
       filter_(makeInputFilter(options_.filter)),
       button_(options_.press) {}
@@ -38,6 +40,7 @@ void PoseTracker::reset() {
   button_.reset();
   rest_keeper_.reset();
   recovery_.reset();
+  creep_.reset();
   last_ = TrackerResult{};
 }
 
@@ -69,14 +72,16 @@ TrackerResult PoseTracker::update(const MarkerField& now_S, const MarkerField& r
   const auto contact_start = std::chrono::steady_clock::now();
   const RestUpdate rest_update = rest_keeper_.update(now_S, rest_S, last_.contact, self_.current().noise_mm,
                                                      options_.contact.contact_threshold_mm, t);
-  // A finger on a recovering gel: the markers as the finger alone moves them (gel_recovery.hpp).
-  MarkerField now = withoutRemainder(now_S, recovery_.advance());
+  // The gel's measured creep, and a finger on a recovering gel: the markers as the finger alone moves them
+  // (gel_creep.hpp, gel_recovery.hpp).
+  const MarkerField unloaded = withoutRemainder(now_S, creep_.advance(now_S, rest_keeper_.rest(), t));
+  MarkerField now = withoutRemainder(unloaded, recovery_.advance());
   r.field = analyzer_.analyze(now, rest_keeper_.rest());
   const bool recovering = r.field.status == contact::ContactFieldStatus::ok &&
                           recovery_.recovering(r.field, last_.contact, self_.current().noise_mm);
   if (recovering) clearContact(r.field);
   if (recovery_.remainderBegan()) {
-    now = withoutRemainder(now_S, recovery_.remainder());
+    now = withoutRemainder(unloaded, recovery_.remainder());
     r.field = analyzer_.analyze(now, rest_keeper_.rest());
   }
   r.contact_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - contact_start).count();
@@ -92,7 +97,7 @@ TrackerResult PoseTracker::update(const MarkerField& now_S, const MarkerField& r
     return held;
   }
   self_.setRest(rest_S);
-  self_.observe(now_S, t, !r.field.in_contact && !recovering);  // a recovering gel moves: not noise
+  self_.observe(unloaded, t, !r.field.in_contact && !recovering);  // a recovering gel moves: not noise
   r.step = estimator_.update(r.field, now, self_.current());
   r.contact = r.step.active;
   r.state = r.step.state;
@@ -103,6 +108,8 @@ TrackerResult PoseTracker::update(const MarkerField& now_S, const MarkerField& r
     accumulator_.add(r.step.increment);
   }
   if (r.contact) fillOutputs(r);
+  if (creep_.observe(now, rest_keeper_.rest(), t, r.contact, self_.current().noise_mm, recovery_.remainder()))
+    recovery_.reset();  // the measured creep holds what was left of a recovery
 
   // A contact ends when the pad is released, or when its finger lifts while
   // another stays (the estimator then begins a new contact in the same frame).

@@ -4,7 +4,8 @@
 // the sensor frame S (mm, same grid) and the time in seconds runs
 //   the rest kept true while nothing touches (rest_keeper.hpp: a shifted
 //   camera, slow drift, hidden markers; each reported as an error event)
-//   -> contact analysis (contact/contact_analyzer.hpp), without the
+//   -> contact analysis (contact/contact_analyzer.hpp), without the gel's
+//      creep once a held press has measured it (gel_creep.hpp) and without the
 //      deformation of a gel recovering after the finger left (gel_recovery.hpp)
 //   -> what the sensor measures about itself (pose/sensor_self_model.hpp:
 //      marker noise on the frames out of contact, pitch, frame interval)
@@ -26,6 +27,7 @@
 #include "core/pattern.hpp"
 #include "input/input_event.hpp"
 #include "input/input_filter.hpp"
+#include "input/gel_creep.hpp"
 #include "input/gel_recovery.hpp"
 #include "input/input_shaping.hpp"
 #include "input/pose_accumulator.hpp"
@@ -45,6 +47,7 @@ struct PoseTrackerOptions {
   PressButtonOptions press;
   RestKeeperOptions rest;
   GelRecoveryOptions recovery;
+  GelCreepOptions creep;
   // The paper's working range (Eq. 18): |dx|, |dy| <= 4 mm, dz <= 3 mm,
   // |yaw| <= 15 deg, |pitch|, |roll| <= 40 deg. Beyond it the result says
   // out_of_range; `raw` is clamped to clamp_factor times it.
@@ -83,6 +86,7 @@ class PoseTracker {
   void reset();
   const PoseTrackerOptions& options() const { return options_; }
   const pose::SensorSelf& sensorSelf() const { return self_.current(); }
+  const CreepModel& gelCreep() const { return creep_.model(); }  // the gel's creep, once a held press measured it
 
  private:
   void emit(TrackerResult& r, EventType type, std::string message = {}) const;
@@ -93,6 +97,7 @@ class PoseTracker {
   pose::SensorSelfModel self_;
   RestKeeper rest_keeper_;
   GelRecovery recovery_;
+  GelCreep creep_;
   pose::AdaptivePoseEstimator estimator_;
   PoseAccumulator accumulator_;
   std::unique_ptr<InputFilter> filter_;

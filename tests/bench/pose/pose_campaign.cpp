@@ -12,7 +12,7 @@
 // in half the runs) and the last columns give their sizes and the contact
 // events (tests/unit/pose/contact_events.hpp: late contact ends, false onsets).
 // Usage: pose_campaign --out runs.csv [--runs N] [--image-runs M]
-//          [--image-max-frames F] [--first-seed S] [--world 1] [--gel-recovery 0]
+//          [--image-max-frames F] [--first-seed S] [--world 1] [--gel-recovery 0] [--gel-creep 0]
 //        pose_campaign (--trace SEED | --trace-scenario FILE.yaml) [--trace-out frames.csv]
 // (a trace: one run's frames, truth beside estimate, with the truly sticking
 // markers (gt_stick) and how many of them the estimate labels stick (stick_true), at field level with
@@ -59,6 +59,7 @@ struct Args {
   bool oracle_slip_normals = true;     // --oracle-slip-normals 0: StickOracleOptions::slip_normals off
   bool world = false;          // the world effects on (sim/random_scenario.hpp: randomScenario(seed, true))
   bool recovery = true;        // input/gel_recovery.hpp on (off: the contact lasts while the gel recovers)
+  bool creep = true;           // input/gel_creep.hpp on (off: a held press's creep is read as depth)
 };
 
 constexpr const char* kUsage =
@@ -66,6 +67,7 @@ constexpr const char* kUsage =
     "                     [--parity odd|even|all]  (odd seeds to tune on, even seeds to accept on)\n"
     "                     [--world 1]  (the world effects on: creep, camera shift, damage, flicker, drift)\n"
     "                     [--gel-recovery 0]  (without input/gel_recovery.hpp, to compare)\n"
+    "                     [--gel-creep 0]  (without input/gel_creep.hpp, to compare)\n"
     "                     [--sd-relative F] [--sd-turn DEG_PER_SQRT_S] [--sd-slide MM_PER_SQRT_S]\n"
     "                     (pose::PoseUncertaintyOptions, for tuning the reported sd on the odd seeds)\n"
     "                     [--policy adaptive|weighted]  (the estimator: pose::ModelPolicy; default adaptive)\n"
@@ -119,6 +121,7 @@ Args parse(int argc, char** argv) {
     else if (k == "--trace-images") a.trace_images = v == "1";
     else if (k == "--world") a.world = v == "1";
     else if (k == "--gel-recovery") a.recovery = v != "0";
+    else if (k == "--gel-creep") a.creep = v != "0";
     else usageError("unknown option " + k);
   }
   if (a.out.empty() && a.trace < 0 && a.trace_scenario.empty()) usageError("--out is required for a campaign");
@@ -150,12 +153,15 @@ std::vector<std::string> header() {
   for (const char* c : {"world", "creep_relaxation", "creep_time_s", "shift_px", "hidden_fraction", "flicker",
                         "exposure_step", "drift_mm", "lift_offs", "late_ends", "worst_end_lag", "false_onsets"})
     h.push_back(c);
+  // The gel's creep as the tracker measured it (input/gel_creep.hpp; 0 when it did not).
+  h.push_back("creep_tau_c_measured_s");
+  h.push_back("creep_gain_measured");
   return h;
 }
 
 std::vector<std::string> row(const char* level, const sim::RandomConditions& c, const sim::WorldEffects& world,
                              double noise_mm, const RunScore& s, const ContactEvents& events, double ms,
-                             double marker_rmse) {
+                             double marker_rmse, const input::CreepModel& creep) {
   std::vector<std::string> r = {level, std::to_string(c.seed), std::string(sim::toString(c.model)), num(c.friction),
                                 num(c.kinetic_ratio), num(c.thickness_mm), num(c.foundation_length_mm),
                                 num(c.marker_depth_mm), std::to_string(c.markers), c.indenter, num(c.noise_grey),
@@ -202,11 +208,15 @@ std::vector<std::string> row(const char* level, const sim::RandomConditions& c, 
   r.push_back(std::to_string(events.lateEnds()));
   r.push_back(std::to_string(events.worstEndLag()));
   r.push_back(std::to_string(events.onsets_untouched));
+  r.push_back(num(creep.tau_c_s));
+  r.push_back(num(creep.gain));
   return r;
 }
 
 // Field level: the tracker over the noisy marker fields, timed per frame.
-std::vector<ReplayFrame> runField(const Recording& rec, input::PoseTrackerOptions options, double& median_ms) {
+// `creep`: the gel's creep as the tracker measured it by the end of the run.
+std::vector<ReplayFrame> runField(const Recording& rec, input::PoseTrackerOptions options, double& median_ms,
+                                  input::CreepModel& creep) {
   options.marker_depth_mm = rec.marker_depth_mm;  // the pad's, as the pipeline takes it from the pattern
   input::PoseTracker tracker(options);
   std::vector<ReplayFrame> frames;
@@ -218,6 +228,7 @@ std::vector<ReplayFrame> runField(const Recording& rec, input::PoseTrackerOption
     if (r.contact) ms.push_back(std::chrono::duration<double, std::milli>(t1 - t0).count());
     frames.push_back(replayFrame(rec.truth[k], r, rec.frames[k].size()));
   }
+  creep = tracker.gelCreep();
   median_ms = 0;
   if (!ms.empty()) {
     std::nth_element(ms.begin(), ms.begin() + static_cast<long>(ms.size() / 2), ms.end());
@@ -276,12 +287,13 @@ int main(int argc, char** argv) {
     }
     if (args.weighted) o.tracker.pose.policy = pose::ModelPolicy::weighted;
     double ms = 0;
+    input::CreepModel creep;
     std::vector<ReplayFrame> frames;
     if (args.trace_images) {
       frames = replayRendered(rs.scenario).frames;
     } else {
       const Recording rec = record(rs.scenario, o);
-      frames = runField(rec, o.tracker, ms);
+      frames = runField(rec, o.tracker, ms, creep);
       if (args.oracle) applyStickOracle(rec, frames, {o.noise_mm, *args.oracle, args.oracle_slip_normals});
     }
     writeTrace(frames, args.trace_out);
@@ -302,20 +314,22 @@ int main(int argc, char** argv) {
     o.tracker.pose.uncertainty = args.uncertainty;
     if (args.weighted) o.tracker.pose.policy = pose::ModelPolicy::weighted;
     o.tracker.recovery.enabled = args.recovery;
+    o.tracker.creep.enabled = args.creep;
     double ms = 0;
+    input::CreepModel creep;
     const Recording rec = record(rs.scenario, o);
-    std::vector<ReplayFrame> field = runField(rec, o.tracker, ms);
+    std::vector<ReplayFrame> field = runField(rec, o.tracker, ms, creep);
     if (args.oracle) applyStickOracle(rec, field, {o.noise_mm, *args.oracle, args.oracle_slip_normals});
     const RunScore s = scoreRun(field);
     diverged += s.judged_diverged ? 1 : 0;
-    out.row(row("field", rs.conditions, rs.scenario.world, o.noise_mm, s, contactEvents(field), ms, 0));
+    out.row(row("field", rs.conditions, rs.scenario.world, o.noise_mm, s, contactEvents(field), ms, 0, creep));
     if (image_done < args.image_runs && rs.scenario.defaultFrameCount() <= args.image_max_frames) {
       const RenderedReplay rr = replayRendered(rs.scenario);
       const double marker_rmse = std::sqrt((rr.marker_rmse_mm[0] * rr.marker_rmse_mm[0] +
                                             rr.marker_rmse_mm[1] * rr.marker_rmse_mm[1] +
                                             rr.marker_rmse_mm[2] * rr.marker_rmse_mm[2]) / 3.0);
       out.row(row("image", rs.conditions, rs.scenario.world, marker_rmse, scoreRun(rr.frames),
-                  contactEvents(rr.frames), 0, marker_rmse));
+                  contactEvents(rr.frames), 0, marker_rmse, input::CreepModel{}));
       ++image_done;
     }
     std::fprintf(stderr, "\rrun %d/%d, diverged (observable and full) %d, image runs %d", i + 1, args.runs, diverged, image_done);

@@ -52,12 +52,22 @@ TEST(GelRecovery, TheContactEndsWhenTheFingerLeavesACreepingGel) {
   EXPECT_LE(std::abs(with.end_lag[0]), kLateEndFrames);
   EXPECT_EQ(with.onsets_untouched, 0);
   EXPECT_EQ(with.estimate_onset.size(), 1u);
-  // Without the recovery rule the contact lasts until the gel is within the threshold (the rule is what acts).
+  // Without the recovery rule and the creep the held press measured (gel_creep.hpp), the contact lasts until
+  // the gel is within the threshold; either alone ends it.
   ReplayOptions off;
   off.tracker.recovery.enabled = false;
+  off.tracker.creep.enabled = false;
   const ContactEvents without = contactEvents(replay(scenario, off));
   ASSERT_EQ(without.end_lag.size(), 1u);
   EXPECT_GT(without.end_lag[0], 30);
+  for (const bool creep : {false, true}) {
+    ReplayOptions one;
+    one.tracker.recovery.enabled = !creep;
+    one.tracker.creep.enabled = creep;
+    const ContactEvents alone = contactEvents(replay(scenario, one));
+    ASSERT_EQ(alone.end_lag.size(), 1u);
+    EXPECT_LE(std::abs(alone.end_lag[0]), kLateEndFrames) << (creep ? "the creep alone" : "the recovery alone");
+  }
 }
 
 TEST(GelRecovery, TenMinutesOfDriftingRestAfterACreepingPressStartNoContact) {

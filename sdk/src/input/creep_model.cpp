@@ -1,0 +1,17 @@
+#include "input/creep_model.hpp"
+
+#include <cmath>
+#include <cstdint>
+
+namespace onetip::input {
+
+void CreepModel::step(std::vector<Eigen::Vector3d>& v, const std::vector<Eigen::Vector3d>& u,
+                      const std::vector<std::uint8_t>& valid, double dt) const {
+  if (v.size() != u.size()) v.assign(u.size(), Eigen::Vector3d::Zero());
+  const double a = std::exp(-std::max(dt, 0.0) / tau_c_s);
+  const double load = (1 - a) * gain;
+  for (size_t i = 0; i < v.size(); ++i)
+    v[i] = valid[i] ? Eigen::Vector3d((a * v[i] + load * u[i]) / (1 + load)) : Eigen::Vector3d(a * v[i]);
+}
+
+}  // namespace onetip::input

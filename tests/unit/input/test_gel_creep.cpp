@@ -1,0 +1,153 @@
+// A held press on a creeping gel is not a finger pressing deeper
+// (input/gel_creep.hpp), on the simulator's viscoelastic pad against its
+// ground truth: the markers tell the two apart, the held press reads the
+// finger's depth once its creep has shown its time course, and a finger that
+// presses deeper on an elastic pad with the creep's own time course is still
+// read as depth.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "input/gel_creep.hpp"
+#include "sim_replay.hpp"
+#include "test_paths.hpp"
+
+using namespace onetip;
+using namespace onetip::input;
+using namespace onetip::poseval;
+
+namespace {
+
+constexpr double kNoiseMm = 0.0006;  // sim_replay.hpp's marker noise per axis
+
+sim::Scenario creepPress() {
+  return sim::loadScenario(std::string(test::sourceDir()) + "/tests/data/scenarios/world/creep_press.yaml");
+}
+
+// creep_press's finger on an elastic pad, pressing on from 1.5 mm after 1 s as the creep would sink the
+// markers: depth 1.5 + 0.4 (1 - exp(-(t - 1) / tau_c)) mm, one keyframe per frame, tau_c the gel's.
+sim::Scenario deeperOnAnElasticPad() {
+  sim::Scenario s = creepPress();
+  const double tau_c = s.world.viscoelastic.retardationTime();
+  s.world.viscoelastic.relaxation = 0;
+  auto& keys = s.indenters[0].keyframes;
+  keys.resize(3);  // approach, touch, 1.5 mm at 1 s
+  for (int k = 31; k <= 150; ++k) {
+    sim::Keyframe key;
+    key.t = k / s.fps;
+    key.depth = 1.5 + 0.4 * (1 - std::exp(-(key.t - 1.0) / tau_c));
+    keys.push_back(key);
+  }
+  sim::Keyframe up;
+  up.t = 5.2;
+  up.depth = -0.3;
+  keys.push_back(up);
+  up.t = 9.0;
+  keys.push_back(up);
+  return s;
+}
+
+// The marker fields u = p - rest (S, mm) as the tracker is given them (sim_replay.hpp's noise), frame by frame.
+std::vector<std::vector<Eigen::Vector3d>> measuredFields(const sim::Scenario& scenario) {
+  const Recording recording = record(scenario);
+  std::vector<std::vector<Eigen::Vector3d>> u;
+  for (const MarkerField& f : recording.frames) {
+    u.emplace_back(f.position.size());
+    for (size_t i = 0; i < u.back().size(); ++i) u.back()[i] = f.position[i] - recording.rest.position[i];
+  }
+  return u;
+}
+
+}  // namespace
+
+TEST(GelCreep, TheMarkersTellAHeldCreepFromAFingerPressingDeeper) {
+  // The same finger, the same time course after 1 s (frame 30): a creeping gel under the finger held from
+  // there moves the markers along one straight line by exponentially shrinking increments; an elastic gel under
+  // the finger pressing on moves them along a curve (the contact widens). From the frame the finger stopped,
+  // windows of 2m frames: the creep's stay on one exponential within the noise bound, the deeper press's do
+  // not, and the frame before the creep's is far off it (the finger stopped there).
+  const auto creep = measuredFields(creepPress());
+  const auto deeper = measuredFields(deeperOnAnElasticPad());
+  const std::vector<std::uint8_t> all(creep[0].size(), 1);
+  for (size_t m : {4, 8, 16, 32}) {
+    const CreepWindow c = creepWindow(creep, 30, m, all, kNoiseMm, GelCreepOptions{}.fit_sigmas, 1e-3);
+    const CreepWindow d = creepWindow(deeper, 30, m, all, kNoiseMm, GelCreepOptions{}.fit_sigmas, 1e-3);
+    ASSERT_TRUE(c.shrinking && d.shrinking) << "m " << m;  // both decay: the time course alone does not tell
+    const double bound = noiseMaximum(c.markers * static_cast<int>(2 * m - 1), 1e-3);
+    EXPECT_TRUE(c.exponential) << "m " << m;
+    EXPECT_LT(c.worst_sigmas, bound) << "m " << m;
+    EXPECT_FALSE(d.exponential) << "m " << m;
+    EXPECT_GT(d.worst_sigmas, bound) << "m " << m;
+    EXPECT_EQ(c.start, 30u) << "m " << m;
+    EXPECT_GT(c.before_sigmas, GelCreepOptions{}.stop_factor * GelCreepOptions{}.fit_sigmas) << "m " << m;
+  }
+  // Later in the deeper press the depth changes too little within a window for its curve to show: its window
+  // is an exponential within the noise too, but it has no frame where a finger stopped before it.
+  const CreepWindow tail = creepWindow(deeper, 45, 8, all, kNoiseMm, GelCreepOptions{}.fit_sigmas, 1e-3);
+  EXPECT_TRUE(tail.exponential);
+  EXPECT_LT(tail.worst_sigmas, noiseMaximum(tail.markers * 15, 1e-3));
+  EXPECT_LT(tail.before_sigmas, GelCreepOptions{}.stop_factor * GelCreepOptions{}.fit_sigmas);
+}
+
+TEST(GelCreep, AHeldPressReadsTheFingersDepthOnceItsCreepIsMeasured) {
+  // 1.5 mm held 4 s on a gel relaxing 30 % (tau 1 s): tau_c = 1.43 s, c = 0.43. Before, dz read 1.75 mm after
+  // 2 s of holding where the truth is 1.375 (the creep as depth).
+  const sim::Scenario scenario = creepPress();
+  const Recording recording = record(scenario);
+  PoseTrackerOptions options;
+  options.marker_depth_mm = recording.marker_depth_mm;
+  PoseTracker tracker(options);
+  double measured_at = -1;
+  double worst_after = 0;
+  for (size_t k = 0; k < recording.frames.size(); ++k) {
+    const TrackerResult r = tracker.update(recording.frames[k], recording.rest, recording.truth[k].t);
+    if (measured_at < 0 && tracker.gelCreep().measured()) measured_at = r.t;
+    const double t = recording.truth[k].t;
+    if (measured_at >= 0 && t > measured_at && t <= 5.0 && recording.truth[k].in_contact)
+      worst_after = std::max(worst_after, std::abs(r.raw.dz - recording.truth[k].input.dz));
+  }
+  const sim::ViscoelasticOptions& gel = scenario.world.viscoelastic;
+  EXPECT_NEAR(tracker.gelCreep().tau_c_s, gel.retardationTime(), 0.05 * gel.retardationTime());
+  EXPECT_NEAR(tracker.gelCreep().gain, gel.creepGain(), 0.05 * gel.creepGain());
+  // Measured within half a second of holding (the hold begins at 1 s), and from then on the depth is the finger's.
+  EXPECT_GT(measured_at, 1.0);
+  EXPECT_LT(measured_at, 1.5);
+  EXPECT_LT(worst_after, 0.05);
+  // Without the unit the creep is read as depth.
+  ReplayOptions off;
+  off.tracker.creep.enabled = false;
+  const std::vector<ReplayFrame> before = replay(scenario, off);
+  EXPECT_GT(before[90].raw.dz - before[90].gt.dz, 0.3);
+}
+
+TEST(GelCreep, APressOnAGelWhoseCreepIsKnownReadsItsDepthWhileHeld) {
+  // creep_repress: the first press (held 2 s) measures the gel; the second, begun 0.3 s after the first lift-off
+  // with the surface still 0.5 mm from rest, is held 0.3 s at 1 mm (before: 0.958 mm after 0.3 s against 0.867).
+  const std::vector<ReplayFrame> frames =
+      replay(sim::loadScenario(std::string(test::sourceDir()) + "/tests/data/scenarios/world/creep_repress.yaml"));
+  int held = 0;
+  for (const ReplayFrame& f : frames) {
+    if (f.t < 4.0 || f.t > 4.3) continue;
+    ASSERT_TRUE(f.gt_contact && f.contact) << "t " << f.t;
+    EXPECT_NEAR(f.raw.dz, f.gt.dz, 0.05) << "t " << f.t;
+    ++held;
+  }
+  EXPECT_GE(held, 9);
+}
+
+TEST(GelCreep, AFingerPressingDeeperOnAnElasticPadIsStillDepth) {
+  // The twin: the finger itself goes 0.4 mm deeper with the creep's time course; nothing is taken away.
+  const sim::Scenario scenario = deeperOnAnElasticPad();
+  ReplayOptions off;
+  off.tracker.creep.enabled = false;
+  const std::vector<ReplayFrame> with = replay(scenario), without = replay(scenario, off);
+  ASSERT_EQ(with.size(), without.size());
+  EXPECT_GT(with[150].gt.dz - with[30].gt.dz, 0.35);
+  for (size_t k = 0; k < with.size(); ++k) {
+    EXPECT_EQ(with[k].raw.dz, without[k].raw.dz) << "frame " << k;
+    if (with[k].gt_contact && with[k].t >= 1.0 && with[k].t <= 5.0) {
+      EXPECT_NEAR(with[k].raw.dz, with[k].gt.dz, 0.05) << "frame " << k;
+    }
+  }
+}
