@@ -74,7 +74,12 @@ void applyStickOracle(const Recording& rec, std::vector<ReplayFrame>& frames, co
     std::vector<size_t> sticking;
     for (size_t i = 0; i < static_cast<size_t>(now.size()); ++i)
       if (sticks(i)) sticking.push_back(i);
-    if (!onset) {
+    if (!onset && noMarkerSticksThrough(frames[k - 1], f)) {  // the observable truth's move, the turn held
+      const ReplayFrame& prev = frames[k - 1];
+      if (f.gt_footprint_valid && prev.gt_footprint_valid)
+        T.translation().head<2>() += f.gt_footprint - prev.gt_footprint;
+      T.translation().z() -= f.gt.dz - prev.gt.dz;
+    } else if (!onset) {
       const MarkerField& before = rec.frames[k - 1];
       const ReplayFrame& prev = frames[k - 1];
       contact::gridSurfaceNormals(now, normal, normal_valid);
@@ -99,17 +104,11 @@ void applyStickOracle(const Recording& rec, std::vector<ReplayFrame>& frames, co
         problem.markers.push_back(m);
         stuck += carries ? 1 : 0;
       }
-      if (noMarkerSticksThrough(prev, f)) {  // the observable truth's footprint and depth, the turn held
-        if (f.gt_footprint_valid && prev.gt_footprint_valid)
-          T.translation().head<2>() += f.gt_footprint - prev.gt_footprint;
-        T.translation().z() -= f.gt.dz - prev.gt.dz;
-      } else {
-        const auto touched_both = [&](size_t i) {
-          return ours(i) && i < prev.gt_contact_markers.size() && prev.gt_contact_markers[i];
-        };
-        if (stuck == 0) problem.footprint = commonFootprint(before, now, touched_both, depth, options.noise_mm);
-        T = pose::solveWeightedIncrement(problem, Eigen::Isometry3d::Identity(), nullptr, 5) * T;
-      }
+      const auto touched_both = [&](size_t i) {
+        return ours(i) && i < prev.gt_contact_markers.size() && prev.gt_contact_markers[i];
+      };
+      if (stuck == 0) problem.footprint = commonFootprint(before, now, touched_both, depth, options.noise_mm);
+      T = pose::solveWeightedIncrement(problem, Eigen::Isometry3d::Identity(), nullptr, 5) * T;
     }
     std::map<size_t, Eigen::Vector3d> kept;
     for (size_t i : sticking) {
