@@ -1,17 +1,20 @@
 #!/usr/bin/env bash
-# What the stick labels cost (tests/unit/pose/stick_oracle.hpp, decision record 0018): the campaign's 300
-# field runs played by each estimator as it is, and by the stick-label oracle registering the truth's labels
-# (with and without the sliding markers' normal residuals), the estimator's own, and those of its own that
-# are true. Writes one CSV per play to
-# docs/pose/data/stick_oracle/ and the summary chart with make_stick_oracle_chart.py.
-# Usage: docs/pose/stick_oracle.sh [path/to/pose_campaign]   (about 10 minutes on one core)
+# What the stick labels cost (tests/unit/pose/stick_oracle.hpp, decision records 0018 and 0019): the
+# campaign's 300 field runs played by each estimator as it is, and by the stick-label oracle registering the
+# truth's labels (its sliding markers' normal residuals with their slide's model error, with the noise alone,
+# or none; the motion held or a constant rate as its prior), the estimator's own, and those of its own that
+# are true. Writes one CSV per play to docs/pose/data/stick_oracle/ and the summary chart with
+# make_stick_oracle_chart.py.
+# Usage: docs/pose/stick_oracle.sh [path/to/pose_campaign]   (about 15 minutes on one core)
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 campaign=${1:-build/bench/pose_campaign}
 out=docs/pose/data/stick_oracle
 mkdir -p "$out"
 "$campaign" --runs 300 --oracle truth --out "$out/truth.csv"
+"$campaign" --runs 300 --oracle truth --oracle-sliding-error 0 --out "$out/truth.noise_only_slides.csv"
 "$campaign" --runs 300 --oracle truth --oracle-slip-normals 0 --out "$out/truth.no_slip_normals.csv"
+"$campaign" --runs 300 --oracle truth --oracle-prior-rate-tau inf --out "$out/truth.constant_rate.csv"
 for policy in adaptive weighted; do
   "$campaign" --runs 300 --policy "$policy" --out "$out/$policy.csv"
   "$campaign" --runs 300 --policy "$policy" --oracle estimate --out "$out/$policy.labels.csv"

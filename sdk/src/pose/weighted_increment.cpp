@@ -35,6 +35,8 @@ Eigen::Matrix<double, 3, 6> pointJacobian(const Increment& inc, const Eigen::Vec
   return j;
 }
 
+double surfaceSd(const WeightedMarker& m) { return m.surface_sd_mm > 0 ? m.surface_sd_mm : m.sd_mm; }
+
 }  // namespace
 
 Eigen::Isometry3d solveWeightedIncrement(const WeightedIncrementProblem& p, const Eigen::Isometry3d& initial,
@@ -59,8 +61,9 @@ Eigen::Isometry3d solveWeightedIncrement(const WeightedIncrementProblem& p, cons
       if (slip_weight > 0 && m.normal.squaredNorm() > 0) {
         const Row6 J = m.normal.transpose() * pointJacobian(inc, m.before, c);
         const double e = m.normal.dot(inc.apply(m.before, c) - m.now);
-        H += slip_weight * marker_info * J.transpose() * J;
-        g += slip_weight * marker_info * J.transpose() * e;
+        const double surface_info = 1.0 / (n * surfaceSd(m) * surfaceSd(m));
+        H += slip_weight * surface_info * J.transpose() * J;
+        g += slip_weight * surface_info * J.transpose() * e;
       }
     }
     if (p.footprint) {
@@ -70,14 +73,14 @@ Eigen::Isometry3d solveWeightedIncrement(const WeightedIncrementProblem& p, cons
       H += info * J.transpose() * J;
       g += info * J.transpose() * e;
     }
-    // The prior holds the motion: the increment's turn and slide about zero.
+    // The prior: the increment's turn and slide about the expected ones (zero: the motion held).
     const Eigen::AngleAxisd turn(inc.R);
     const double turn_info = 1.0 / (p.prior_turn_sd_rad * p.prior_turn_sd_rad);
     const double slide_info = 1.0 / (p.prior_slide_sd_mm * p.prior_slide_sd_mm);
     H.topLeftCorner<3, 3>() += turn_info * Eigen::Matrix3d::Identity();
-    g.head<3>() += turn_info * turn.angle() * turn.axis();
+    g.head<3>() += turn_info * (turn.angle() * turn.axis() - p.prior_turn_rad);
     H.bottomRightCorner<3, 3>() += slide_info * Eigen::Matrix3d::Identity();
-    g.tail<3>() += slide_info * inc.v;
+    g.tail<3>() += slide_info * (inc.v - p.prior_slide_mm);
     const Vector6d step = -H.ldlt().solve(g);
     if (!step.allFinite()) break;
     const Eigen::Vector3d dtheta = step.head<3>();
@@ -90,7 +93,7 @@ Eigen::Isometry3d solveWeightedIncrement(const WeightedIncrementProblem& p, cons
     residuals->normal.clear();
     for (const WeightedMarker& m : p.markers) {
       residuals->stick.push_back((inc.apply(m.anchor, c) - m.now) / m.sd_mm);
-      residuals->normal.push_back(m.normal.dot(inc.apply(m.before, c) - m.now) / m.sd_mm);
+      residuals->normal.push_back(m.normal.dot(inc.apply(m.before, c) - m.now) / surfaceSd(m));
     }
   }
   Eigen::Isometry3d out = Eigen::Isometry3d::Identity();
@@ -135,7 +138,7 @@ double truncatedCost(const WeightedIncrementProblem& p, const Eigen::Isometry3d&
   double markers = 0;
   for (const WeightedMarker& m : p.markers) {
     const Eigen::Vector3d e = (dT * m.anchor - m.now) / m.sd_mm;
-    const double nu = m.normal.dot(dT * m.before - m.now) / m.sd_mm;
+    const double nu = m.normal.dot(dT * m.before - m.now) / surfaceSd(m);
     const double slips = kStickChi2 + std::min(nu * nu, kSurfaceChi2);
     markers += leadsTheFinger(m, e) ? e.squaredNorm() : std::min(e.squaredNorm(), slips);
   }
@@ -143,7 +146,8 @@ double truncatedCost(const WeightedIncrementProblem& p, const Eigen::Isometry3d&
   if (p.footprint)
     cost += ((dT * p.footprint->carried - p.footprint->seen).head<2>() / p.footprint->sd_mm).squaredNorm();
   const Eigen::AngleAxisd turn(dT.linear());
-  cost += std::pow(turn.angle() / p.prior_turn_sd_rad, 2) + ((dT * c - c) / p.prior_slide_sd_mm).squaredNorm();
+  cost += ((turn.angle() * turn.axis() - p.prior_turn_rad) / p.prior_turn_sd_rad).squaredNorm() +
+          ((dT * c - c - p.prior_slide_mm) / p.prior_slide_sd_mm).squaredNorm();
   return cost;
 }
 

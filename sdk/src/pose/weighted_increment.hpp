@@ -7,10 +7,11 @@
 // It minimises, with every residual divided by its standard deviation,
 //   (1/n) sum_i w_i |dT(a_i) - p_i|^2 / s_i^2           stick: anchor a_i (carried
 //                                                       to frame k-1) onto p_i now
-// + (1/n) sum_i (1 - w_i) (n_i . (dT(b_i) - p_i))^2 / s_i^2   slip: a sliding marker stays on
+// + (1/n) sum_i (1 - w_i) (n_i . (dT(b_i) - p_i))^2 / u_i^2   slip: a sliding marker stays on
 //                                                       the finger's surface (normal n_i)
 // + |P_xy (dT(f) - g)|^2 / s_f^2                       footprint: carried by the finger
-// + |theta|^2 / s_turn^2 + |v|^2 / s_slide^2           prior: the motion held
+// + |theta - theta_p|^2 / s_turn^2 + |v - v_p|^2 / s_slide^2   prior: the motion expected
+//                                                       (theta_p = v_p = 0: held)
 // (n the number of markers: their residuals are largely the marker layer's
 // shared deformation, so together they count as one marker at their spread,
 // as in pose/pose_uncertainty.hpp). With w_i in {0, 1} and no footprint this is
@@ -36,10 +37,12 @@ struct WeightedMarker {
   double on_surface = 1;               // v_i in [0, 1]: the slip residual's weight is (1 - w_i) v_i (a marker the
                                        // finger does not touch is not on its surface)
   Eigen::Vector3d from_rest{0, 0, 0};  // unit direction of the marker's displacement from rest (zero: none)
+  double surface_sd_mm = 0;            // u_i: sd of the sliding residual along the normal (0: s_i); it
+                                       // can carry the slide's model error on top of the noise
 };
 
 // The residuals at a solution, each in units of its marker's sd: e_i = (dT(a_i) - p_i) / s_i (|e_i|^2 is
-// chi-square with 3 degrees of freedom for a sticking marker) and (n_i . (dT(b_i) - p_i)) / s_i.
+// chi-square with 3 degrees of freedom for a sticking marker) and (n_i . (dT(b_i) - p_i)) / u_i.
 struct WeightedResiduals {
   std::vector<Eigen::Vector3d> stick;
   std::vector<double> normal;
@@ -57,6 +60,10 @@ struct WeightedIncrementProblem {
   std::optional<FootprintEvidence> footprint;
   double prior_turn_sd_rad = 0.1;  // s_turn
   double prior_slide_sd_mm = 1;    // s_slide
+  // The prior's expected increment: theta_p, the turn as an axis times its angle (S, rad), and v_p, the
+  // move of c (S, mm). Zero holds the motion; a motion prior with a rate expects the last increment again.
+  Eigen::Vector3d prior_turn_rad{0, 0, 0};
+  Eigen::Vector3d prior_slide_mm{0, 0, 0};
 };
 
 // Gauss-Newton from `initial`; the residuals at the result in `residuals` when given.

@@ -24,7 +24,6 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <optional>
 #include <string>
 
 #include "campaign_score.hpp"
@@ -55,8 +54,8 @@ struct Args {
   double trace_noise_mm = -1;  // < 0: the run's own (the campaign's noise per grey level)
   bool trace_images = false;   // the trace through rendered frames and the real front end
   bool weighted = false;
-  std::optional<OracleLabels> oracle;  // --oracle: stick_oracle.hpp's registration replaces the estimate
-  bool oracle_slip_normals = true;     // --oracle-slip-normals 0: StickOracleOptions::slip_normals off
+  bool oracle = false;          // --oracle: stick_oracle.hpp's registration replaces the estimate
+  StickOracleOptions oracle_options;  // its labels, --oracle-slip-normals, --oracle-prior-rate-tau (noise per run)
   bool world = false;          // the world effects on (sim/random_scenario.hpp: randomScenario(seed, true))
   bool recovery = true;        // input/gel_recovery.hpp on (off: the contact lasts while the gel recovers)
   bool creep = true;           // input/gel_creep.hpp on (off: a held press's creep is read as depth)
@@ -75,6 +74,9 @@ constexpr const char* kUsage =
     "                     truth's stick labels, the ceiling; with the policy's own; or with those of its own that\n"
     "                     are true. The estimate is replaced by the oracle's)\n"
     "                     [--oracle-slip-normals 0]  (the oracle without the sliding markers' normal residuals)\n"
+    "                     [--oracle-sliding-error 0]  (their sd the noise alone, without their slide's model error)\n"
+    "                     [--oracle-prior-rate-tau S]  (the oracle's motion prior: 0 holds the motion (default);\n"
+    "                     S > 0 expects the last increment again, decaying with time constant S s; inf: constant)\n"
     "       pose_campaign (--trace SEED | --trace-scenario FILE.yaml) [--trace-out frames.csv]\n"
     "                     [--trace-noise-mm SIGMA]  (marker noise per axis; the estimator is told it as its prior)\n"
     "                     [--trace-images 1]  (through rendered frames and the real front end instead)\n";
@@ -107,12 +109,18 @@ Args parse(int argc, char** argv) {
       a.weighted = v == "weighted";
     }
     else if (k == "--oracle") {
-      if (v == "truth") a.oracle = OracleLabels::truth;
-      else if (v == "estimate") a.oracle = OracleLabels::estimate;
-      else if (v == "estimate-true") a.oracle = OracleLabels::estimate_true;
+      a.oracle = true;
+      if (v == "truth") a.oracle_options.labels = OracleLabels::truth;
+      else if (v == "estimate") a.oracle_options.labels = OracleLabels::estimate;
+      else if (v == "estimate-true") a.oracle_options.labels = OracleLabels::estimate_true;
       else usageError("--oracle must be truth, estimate or estimate-true");
     }
-    else if (k == "--oracle-slip-normals") a.oracle_slip_normals = v != "0";
+    else if (k == "--oracle-slip-normals") a.oracle_options.slip_normals = v != "0";
+    else if (k == "--oracle-sliding-error") a.oracle_options.sliding_model_error = v != "0";
+    else if (k == "--oracle-prior-rate-tau") {
+      a.oracle_options.prior_rate_tau_s = std::stod(v);
+      if (!(a.oracle_options.prior_rate_tau_s >= 0)) usageError("--oracle-prior-rate-tau must be 0 or more seconds");
+    }
     else if (k == "--out") a.out = v;
     else if (k == "--trace") a.trace = std::stol(v);
     else if (k == "--trace-scenario") a.trace_scenario = v;
@@ -156,6 +164,9 @@ std::vector<std::string> header() {
   // The gel's creep as the tracker measured it (input/gel_creep.hpp; 0 when it did not).
   h.push_back("creep_tau_c_measured_s");
   h.push_back("creep_gain_measured");
+  // Against the stricter observable truth that also holds the turn a thin stick set does not fix.
+  h.push_back("fixed_longest_excess");
+  h.push_back("fixed_judged_diverged");
   return h;
 }
 
@@ -210,7 +221,15 @@ std::vector<std::string> row(const char* level, const sim::RandomConditions& c, 
   r.push_back(std::to_string(events.onsets_untouched));
   r.push_back(num(creep.tau_c_s));
   r.push_back(num(creep.gain));
+  r.push_back(std::to_string(s.fixed_longest_excess));
+  r.push_back(s.fixed_judged_diverged ? "1" : "0");
   return r;
+}
+
+StickOracleOptions oracleOptions(const Args& args, double noise_mm) {
+  StickOracleOptions o = args.oracle_options;
+  o.noise_mm = noise_mm;
+  return o;
 }
 
 // Field level: the tracker over the noisy marker fields, timed per frame.
@@ -237,7 +256,7 @@ std::vector<ReplayFrame> runField(const Recording& rec, input::PoseTrackerOption
   return frames;
 }
 
-void writeTrace(const std::vector<ReplayFrame>& frames, const std::string& path) {
+void writeTrace(const std::vector<ReplayFrame>& frames, double noise_mm, const std::string& path) {
   std::vector<std::string> h = {"frame", "t", "gt_contact", "gt_state", "contact", "state", "model",
                                 "region_markers", "gt_contact_markers", "region_in_contact", "n_stick", "n_slip",
                                 "gt_stick", "stick_true", "regions"};
@@ -245,7 +264,9 @@ void writeTrace(const std::vector<ReplayFrame>& frames, const std::string& path)
   for (const char* axis : {"dx", "dy", "dz", "yaw", "pitch", "roll"}) h.push_back(axis);
   for (const char* axis : {"dx", "dy", "dz", "yaw", "pitch", "roll"}) h.push_back(std::string("sd_") + axis);
   for (const char* axis : {"dx", "dy", "dz", "yaw", "pitch", "roll"}) h.push_back(std::string("obs_") + axis);
+  for (const char* axis : {"dx", "dy", "dz", "yaw", "pitch", "roll"}) h.push_back(std::string("fixed_obs_") + axis);
   const std::vector<Input6> observable = observableTruth(frames);
+  const std::vector<Input6> fixed = observableTruth(frames, {UnseenMotion::unfixed_directions, noise_mm});
   CsvWriter out(path, h);
   for (size_t k = 0; k < frames.size(); ++k) {
     const ReplayFrame& f = frames[k];
@@ -265,6 +286,7 @@ void writeTrace(const std::vector<ReplayFrame>& frames, const std::string& path)
     for (double v : f.raw.asArray()) r.push_back(num(v));
     for (double v : f.sd.asArray()) r.push_back(num(v));
     for (double v : observable[k].asArray()) r.push_back(num(v));
+    for (double v : fixed[k].asArray()) r.push_back(num(v));
     out.row(r);
   }
   out.commit();
@@ -294,10 +316,10 @@ int main(int argc, char** argv) {
     } else {
       const Recording rec = record(rs.scenario, o);
       frames = runField(rec, o.tracker, ms, creep);
-      if (args.oracle) applyStickOracle(rec, frames, {o.noise_mm, *args.oracle, args.oracle_slip_normals});
+      if (args.oracle) applyStickOracle(rec, frames, oracleOptions(args, o.noise_mm));
     }
-    writeTrace(frames, args.trace_out);
-    const RunScore s = scoreRun(frames);
+    writeTrace(frames, o.noise_mm, args.trace_out);
+    const RunScore s = scoreRun(frames, o.noise_mm);
     std::printf("%s: diverged %d (longest %d from frame %d)\n", rs.scenario.name.c_str(), s.diverged,
                 s.longest_excess, s.first_excess_frame);
     return 0;
@@ -319,8 +341,8 @@ int main(int argc, char** argv) {
     input::CreepModel creep;
     const Recording rec = record(rs.scenario, o);
     std::vector<ReplayFrame> field = runField(rec, o.tracker, ms, creep);
-    if (args.oracle) applyStickOracle(rec, field, {o.noise_mm, *args.oracle, args.oracle_slip_normals});
-    const RunScore s = scoreRun(field);
+    if (args.oracle) applyStickOracle(rec, field, oracleOptions(args, o.noise_mm));
+    const RunScore s = scoreRun(field, o.noise_mm);
     diverged += s.judged_diverged ? 1 : 0;
     out.row(row("field", rs.conditions, rs.scenario.world, o.noise_mm, s, contactEvents(field), ms, 0, creep));
     if (image_done < args.image_runs && rs.scenario.defaultFrameCount() <= args.image_max_frames) {
@@ -328,7 +350,7 @@ int main(int argc, char** argv) {
       const double marker_rmse = std::sqrt((rr.marker_rmse_mm[0] * rr.marker_rmse_mm[0] +
                                             rr.marker_rmse_mm[1] * rr.marker_rmse_mm[1] +
                                             rr.marker_rmse_mm[2] * rr.marker_rmse_mm[2]) / 3.0);
-      out.row(row("image", rs.conditions, rs.scenario.world, marker_rmse, scoreRun(rr.frames),
+      out.row(row("image", rs.conditions, rs.scenario.world, marker_rmse, scoreRun(rr.frames, marker_rmse),
                   contactEvents(rr.frames), 0, marker_rmse, input::CreepModel{}));
       ++image_done;
     }

@@ -42,11 +42,9 @@ double percentile(std::vector<double> v, double q) {
 
 bool beyondDivergence(double error, size_t axis) { return std::abs(error) > (axis < 3 ? kDivergenceMm : kDivergenceDeg); }
 
-// Divergence and linear-range errors against the observable truth (observable_truth.hpp).
-void scoreAgainstObservable(const std::vector<ReplayFrame>& frames, RunScore& s) {
-  const std::vector<Input6> reference = observableTruth(frames);
-  std::array<std::vector<double>, 6> linear;
-  int stretch = 0;
+// The longest stretch of consecutive working-range frames with an axis beyond 1 mm / 5 deg of `reference`.
+int longestExcess(const std::vector<ReplayFrame>& frames, const std::vector<Input6>& reference) {
+  int longest = 0, stretch = 0;
   for (size_t k = 0; k < frames.size(); ++k) {
     const ReplayFrame& f = frames[k];
     if (!f.gt_contact || !inWorkingRange(f.gt)) {
@@ -56,15 +54,31 @@ void scoreAgainstObservable(const std::vector<ReplayFrame>& frames, RunScore& s)
     const std::array<double, 6> est = f.contact ? f.raw.asArray() : std::array<double, 6>{};
     const std::array<double, 6> ref = reference[k].asArray();
     bool beyond = false;
-    for (size_t a = 0; a < 6; ++a) {
-      beyond = beyond || beyondDivergence(est[a] - ref[a], a);
-      if (inLinearRange(f.gt)) linear[a].push_back(std::abs(est[a] - ref[a]));
-    }
+    for (size_t a = 0; a < 6; ++a) beyond = beyond || beyondDivergence(est[a] - ref[a], a);
     stretch = beyond ? stretch + 1 : 0;
-    s.observable_longest_excess = std::max(s.observable_longest_excess, stretch);
+    longest = std::max(longest, stretch);
+  }
+  return longest;
+}
+
+// Divergence and linear-range errors against the observable truth (observable_truth.hpp); divergence also
+// against its stricter form, which holds what a thin stick set does not fix.
+void scoreAgainstObservable(const std::vector<ReplayFrame>& frames, double noise_mm, RunScore& s) {
+  const std::vector<Input6> reference = observableTruth(frames);
+  s.fixed_longest_excess =
+      longestExcess(frames, observableTruth(frames, {UnseenMotion::unfixed_directions, noise_mm}));
+  s.observable_longest_excess = longestExcess(frames, reference);
+  std::array<std::vector<double>, 6> linear;
+  for (size_t k = 0; k < frames.size(); ++k) {
+    const ReplayFrame& f = frames[k];
+    if (!f.gt_contact || !inLinearRange(f.gt)) continue;
+    const std::array<double, 6> est = f.contact ? f.raw.asArray() : std::array<double, 6>{};
+    const std::array<double, 6> ref = reference[k].asArray();
+    for (size_t a = 0; a < 6; ++a) linear[a].push_back(std::abs(est[a] - ref[a]));
   }
   s.observable_diverged = s.observable_longest_excess > kDivergenceFrames;
   s.judged_diverged = s.observable_diverged && s.diverged;
+  s.fixed_judged_diverged = s.fixed_longest_excess > kDivergenceFrames && s.judged_diverged;
   for (size_t a = 0; a < 6; ++a) {
     s.observable_median[a] = percentile(linear[a], 0.5);
     s.observable_p95[a] = percentile(linear[a], 0.95);
@@ -92,7 +106,7 @@ void scoreUncertainty(const std::vector<ReplayFrame>& frames, RunScore& s) {
 
 }  // namespace
 
-RunScore scoreRun(const std::vector<ReplayFrame>& frames) {
+RunScore scoreRun(const std::vector<ReplayFrame>& frames, double noise_mm) {
   RunScore s;
   s.frames = static_cast<int>(frames.size());
   std::array<double, 6> squares{};
@@ -164,7 +178,7 @@ RunScore scoreRun(const std::vector<ReplayFrame>& frames) {
   s.gross_slip_turn_before_excess_deg = s.first_excess_frame >= 0
                                             ? turned_by_frame[static_cast<size_t>(s.first_excess_frame)]
                                             : s.gross_slip_turn_deg;
-  scoreAgainstObservable(frames, s);
+  scoreAgainstObservable(frames, noise_mm, s);
   scoreUncertainty(frames, s);
   return s;
 }

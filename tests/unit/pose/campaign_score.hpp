@@ -65,6 +65,12 @@ struct RunScore {
   bool observable_diverged = false;      // observable_longest_excess > kDivergenceFrames
   bool judged_diverged = false;          // diverged against both: a prior that foresaw the unseen turn is not
   std::array<double, 6> observable_median{}, observable_p95{};  // |error| per axis over the linear-range frames
+  // Against the stricter observable truth that also holds the turn a thin stick set does not fix
+  // (observable_truth.hpp: UnseenMotion::unfixed_directions, at the run's marker noise):
+  int fixed_longest_excess = 0;
+  bool fixed_judged_diverged = false;    // diverged against it too (judged_diverged and beyond it): an estimate
+                                         // that sees a thin set's turn (through the sliding markers) or holds
+                                         // it is not penalised
   // Honest uncertainty, against the full truth, over the working-range frames where both are in contact:
   int sd_frames = 0;
   std::array<int, 6> within_two_sd{};    // frames with |error| <= 2 sd, per axis
@@ -72,6 +78,7 @@ struct RunScore {
   std::array<double, 6> median_sd_before_gross_slip{};
 };
 
-RunScore scoreRun(const std::vector<ReplayFrame>& frames);
+// noise_mm: the run's per-axis marker noise (mm), for the stricter observable truth.
+RunScore scoreRun(const std::vector<ReplayFrame>& frames, double noise_mm = 0.0006);
 
 }  // namespace onetip::poseval

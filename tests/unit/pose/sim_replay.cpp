@@ -50,6 +50,7 @@ ReplayFrame replayFrame(const sim::GroundTruthFrame& f, const input::TrackerResu
   out.gt_c0 = f.onset_centroid;
   out.gt_contact_markers = f.contact;
   out.gt_slip = f.slip;
+  out.gt_positions = f.markers.position;
   if (f.indenter_poses.size() > 1) {
     out.gt_followed.assign(f.owner.size(), 0);
     for (size_t i = 0; i < f.owner.size(); ++i) out.gt_followed[i] = f.owner[i] == f.followed ? 1 : 0;

@@ -37,6 +37,7 @@ struct ReplayFrame {
   Eigen::Vector3d gt_c0{0, 0, 0};      // the truth's onset centroid c0 (S, mm): gt is its motion read there
   std::vector<std::uint8_t> gt_contact_markers, gt_slip;
   std::vector<std::uint8_t> gt_followed;  // per marker: its node touches the finger the truth follows (empty: all do)
+  std::vector<Eigen::Vector3d> gt_positions;  // per marker: its true position (S, mm)
   Eigen::Vector2d gt_footprint{0, 0};  // S.x, S.y centroid of the markers whose nodes touch (true positions, mm)
   bool gt_footprint_valid = false;     // some marker touches
   // estimate

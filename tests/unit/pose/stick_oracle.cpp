@@ -10,6 +10,7 @@
 #include "observable_truth.hpp"
 #include "pose/pose_uncertainty.hpp"
 #include "pose/weighted_increment.hpp"
+#include "sliding_surface.hpp"
 
 namespace onetip::poseval {
 
@@ -40,6 +41,7 @@ void applyStickOracle(const Recording& rec, std::vector<ReplayFrame>& frames, co
   const pose::PoseUncertaintyOptions prior;
   const Eigen::Vector3d depth(0, 0, rec.marker_depth_mm);  // a marker's surface point lies d above it (0003)
   Eigen::Isometry3d T = Eigen::Isometry3d::Identity();     // the finger since onset (S, mm)
+  Eigen::Isometry3d last_increment = Eigen::Isometry3d::Identity();  // T_{k-1} T_{k-2}^-1
   std::map<size_t, Eigen::Vector3d> anchors;  // marker -> its surface point on the finger (onset coordinates)
   std::vector<Eigen::Vector3d> normal;
   std::vector<std::uint8_t> normal_valid;
@@ -55,8 +57,10 @@ void applyStickOracle(const Recording& rec, std::vector<ReplayFrame>& frames, co
     const bool onset = k == 0 || !frames[k - 1].gt_contact || f.gt_c0 != frames[k - 1].gt_c0;  // the truth's onset
     if (onset) {
       T = Eigen::Isometry3d::Identity();
+      last_increment = Eigen::Isometry3d::Identity();
       anchors.clear();
     }
+    const Eigen::Isometry3d T_before = T;
     const Eigen::Vector3d& c0 = f.gt_c0;
     const auto ours = [&](size_t i) {
       return now.valid[i] && f.gt_contact_markers[i] && (f.gt_followed.empty() || f.gt_followed[i]);
@@ -88,7 +92,14 @@ void applyStickOracle(const Recording& rec, std::vector<ReplayFrame>& frames, co
       const double frame_s = std::max(truth.t - rec.truth[k - 1].t, 1e-4);
       problem.prior_turn_sd_rad = prior.unseen_turn_deg_per_sqrt_s * kRadPerDeg * std::sqrt(frame_s);
       problem.prior_slide_sd_mm = prior.unseen_slide_mm_per_sqrt_s * std::sqrt(frame_s);
+      if (options.prior_rate_tau_s > 0) {  // the last increment again, about this frame's centre, decayed
+        const double decay = std::exp(-frame_s / options.prior_rate_tau_s);
+        const Eigen::AngleAxisd turn(last_increment.linear());
+        problem.prior_turn_rad = decay * turn.angle() * turn.axis();
+        problem.prior_slide_mm = decay * (last_increment * problem.centre - problem.centre);
+      }
       int stuck = 0;
+      std::vector<bool> slides;  // per problem marker: whether its normal residual takes slidingSurfaceSd
       for (size_t i = 0; i < static_cast<size_t>(now.size()); ++i) {
         if (!before.valid[i] || !(ours(i) || sticks(i))) continue;
         const auto a = anchors.find(i);
@@ -102,14 +113,29 @@ void applyStickOracle(const Recording& rec, std::vector<ReplayFrame>& frames, co
         m.weight = carries ? 1 : 0;
         m.sd_mm = std::sqrt(2.0) * options.noise_mm;
         problem.markers.push_back(m);
+        slides.push_back(!carries && options.sliding_model_error);
         stuck += carries ? 1 : 0;
       }
+      // A sliding marker's normal residual carries its slide's model error (slidingSurfaceSd): the slide is
+      // first predicted by the last increment, then taken from this frame's solve, which is solved again.
+      const auto slidesBy = [&](const Eigen::Isometry3d& increment) {
+        for (size_t j = 0; j < problem.markers.size(); ++j) {
+          pose::WeightedMarker& m = problem.markers[j];
+          if (slides[j])
+            m.surface_sd_mm = slidingSurfaceSd(m.sd_mm, increment * m.before - m.now, m.normal,
+                                                     prior.relative_increment_error);
+        }
+      };
       const auto touched_both = [&](size_t i) {
         return ours(i) && i < prev.gt_contact_markers.size() && prev.gt_contact_markers[i];
       };
       if (stuck == 0) problem.footprint = commonFootprint(before, now, touched_both, depth, options.noise_mm);
-      T = pose::solveWeightedIncrement(problem, Eigen::Isometry3d::Identity(), nullptr, 5) * T;
+      slidesBy(last_increment);
+      const Eigen::Isometry3d first = pose::solveWeightedIncrement(problem, Eigen::Isometry3d::Identity(), nullptr, 5);
+      slidesBy(first);
+      T = pose::solveWeightedIncrement(problem, first, nullptr, 5) * T;
     }
+    last_increment = T * T_before.inverse();
     std::map<size_t, Eigen::Vector3d> kept;
     for (size_t i : sticking) {
       const auto a = anchors.find(i);

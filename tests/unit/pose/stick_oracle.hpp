@@ -16,9 +16,15 @@
 //     that offset), so T is the finger's own motion;
 //   - a marker that touches and slips stays on the finger's surface: its
 //     residual along the measured surface normal (contact/surface_normals.hpp;
-//     Eq. 13-15, w_i = 0), unless options.slip_normals is off;
-//   - what those do not fix is held by the estimator's motion prior
-//     (PoseUncertaintyOptions' random walk per frame), as issue 40 item 2 asks;
+//     Eq. 13-15, w_i = 0), unless options.slip_normals is off, with the sd of
+//     sliding_surface.hpp (slidingSurfaceSd): the noise and the
+//     model error of its slide (the marker layer's departure from the
+//     surface), the slide first predicted by the last increment, then taken
+//     from a first solve;
+//   - what those do not fix comes from a motion prior with the estimator's
+//     random walk per frame (PoseUncertaintyOptions), as issue 40 item 2 asks:
+//     the motion held (the prior expects no increment), or a rate that decays
+//     (it expects the oracle's last increment again, times exp(-dt / tau));
 //   - over an interval in which no marker sticks in both frames
 //     (observable_truth.hpp) it does what the observable truth does: the turn
 //     held, x and y following the true footprint's centroid, z the truth's
@@ -53,6 +59,12 @@ struct StickOracleOptions {
   // markers cannot, but the lattice normal at a contact's edge is not the finger's (the marker layer bends
   // there), so where the sticking markers fix the motion alone they bias it (decision record 0018).
   bool slip_normals = true;
+  // Their sd grows with each marker's slide (sliding_surface.hpp: slidingSurfaceSd, the marker
+  // layer's departure from the surface); off: the noise alone, as decision record 0018 measured.
+  bool sliding_model_error = true;
+  // The motion prior's rate time constant tau (s): 0 holds the motion; tau > 0 expects the last increment
+  // again, scaled by exp(-dt / tau) (infinity: a constant rate).
+  double prior_rate_tau_s = 0;
 };
 
 // Replaces each frame's estimate (contact, raw, composed, stick labels) by the

@@ -102,3 +102,83 @@ TEST(ObservableTruth, ATurnHeldOnceStaysTheSameTurnWhileTheFingerThenTurnsAboutA
         << "frame " << k;
   }
 }
+
+namespace {
+
+// A contact whose markers all stick, at `points` (S, mm) in every frame, the finger's true motion since onset
+// T_k = `motions`[k] about c0 = 0, so each sticking marker's true position moves with it.
+std::vector<ReplayFrame> stuckContact(const std::vector<Eigen::Vector3d>& points,
+                                      const std::vector<Eigen::Isometry3d>& motions) {
+  std::vector<ReplayFrame> frames;
+  for (const Eigen::Isometry3d& T : motions) {
+    ReplayFrame f = truthFrame(ContactState::stick, 0, 0, 0);
+    f.gt = input6FromMotion(T, f.gt_c0);
+    f.gt_contact_markers.assign(points.size(), 1);
+    f.gt_slip.assign(points.size(), 0);
+    for (const Eigen::Vector3d& q : points) f.gt_positions.push_back(T * q);
+    frames.push_back(f);
+  }
+  return frames;
+}
+
+Eigen::Isometry3d turnAbout(const Eigen::Vector3d& point, const Eigen::Vector3d& axis, double deg) {
+  return Eigen::Translation3d(point) * Eigen::AngleAxisd(deg * kRadPerDeg, axis.normalized()) *
+         Eigen::Translation3d(-point);
+}
+
+const ObservableTruthOptions kStrict{UnseenMotion::unfixed_directions, 0.0006};
+
+}  // namespace
+
+TEST(ObservableTruthStrict, OneStickingMarkerFixesItsPointButNotTheTurnAboutIt) {
+  // The finger turns 6 deg about a tilted axis through the one marker that sticks while sliding 0.3 mm: the
+  // strict reference moves that marker exactly as the truth does and holds the turn; issue 40's judge, which
+  // counts one sticking marker as seeing everything, follows the truth.
+  const Eigen::Vector3d q(1.0, -0.5, 0.2);
+  std::vector<Eigen::Isometry3d> motions;
+  for (int k = 0; k <= 6; ++k)
+    motions.push_back(Eigen::Translation3d(0.05 * k, 0, 0) * turnAbout(q, {0.3, 0.2, 1.0}, 1.0 * k));
+  const std::vector<ReplayFrame> frames = stuckContact({q}, motions);
+  const std::vector<Input6> strict = observableTruth(frames, kStrict), loose = observableTruth(frames);
+  for (size_t k = 0; k < frames.size(); ++k) {
+    const Eigen::Isometry3d reference = motionFromInput6(strict[k], frames[k].gt_c0);
+    EXPECT_NEAR(Eigen::AngleAxisd(reference.linear()).angle(), 0.0, 1e-9) << "frame " << k;
+    EXPECT_NEAR((reference * q - motions[k] * q).norm(), 0.0, 1e-9) << "frame " << k;
+    EXPECT_NEAR(loose[k].yaw, frames[k].gt.yaw, 1e-9);
+  }
+  EXPECT_GT(std::abs(frames.back().gt.yaw), 4.0);
+}
+
+TEST(ObservableTruthStrict, ALineOfStickingMarkersHidesOnlyTheTurnAboutTheLine) {
+  // Three markers on a line along S.x stick while the finger rolls about that line (4 deg) and pitches about
+  // S.y through the line's centre (3 deg): the reference holds the roll and follows the pitch.
+  const std::vector<Eigen::Vector3d> line = {{-1.2, 0.4, 0.1}, {0.0, 0.4, 0.1}, {1.2, 0.4, 0.1}};
+  const Eigen::Vector3d centre = line[1];
+  std::vector<Eigen::Isometry3d> motions, seen;
+  for (int k = 0; k <= 4; ++k) {
+    const Eigen::Isometry3d pitch = turnAbout(centre, Eigen::Vector3d::UnitY(), 0.75 * k);
+    motions.push_back(pitch * turnAbout(centre, Eigen::Vector3d::UnitX(), 1.0 * k));
+    seen.push_back(pitch);
+  }
+  const std::vector<ReplayFrame> frames = stuckContact(line, motions);
+  const std::vector<Input6> strict = observableTruth(frames, kStrict);
+  for (size_t k = 0; k < frames.size(); ++k) {
+    const Eigen::Isometry3d reference = motionFromInput6(strict[k], frames[k].gt_c0);
+    // The roll and the pitch do not commute, so the held roll's offset is exact only to second order in the
+    // small angles per frame (1 and 0.75 deg): 0.02 deg after four frames.
+    EXPECT_NEAR(Eigen::AngleAxisd(reference.linear() * seen[k].linear().transpose()).angle() * kDegPerRad, 0.0,
+                0.05) << "frame " << k;
+    for (const Eigen::Vector3d& q : line) EXPECT_NEAR((reference * q - motions[k] * q).norm(), 0.0, 1e-3);
+  }
+}
+
+TEST(ObservableTruthStrict, ThreeMarkersOffALineFixEveryDirection) {
+  const std::vector<Eigen::Vector3d> triangle = {{-1.2, 0.0, 0.1}, {1.2, 0.0, 0.1}, {0.0, 1.2, 0.1}};
+  std::vector<Eigen::Isometry3d> motions;
+  for (int k = 0; k <= 4; ++k)
+    motions.push_back(Eigen::Translation3d(0.1 * k, -0.05 * k, 0.02 * k) * turnAbout({0, 0, 8}, {1, 2, 3}, 1.5 * k));
+  const std::vector<ReplayFrame> frames = stuckContact(triangle, motions);
+  const std::vector<Input6> strict = observableTruth(frames, kStrict);
+  for (size_t k = 0; k < frames.size(); ++k)
+    for (size_t a = 0; a < 6; ++a) EXPECT_NEAR(strict[k].asArray()[a], frames[k].gt.asArray()[a], 1e-9);
+}

@@ -1,13 +1,17 @@
 // The stick-label oracle (stick_oracle.hpp) with the truth's labels on shipped scenarios, against the
 // observable truth: where plenty of markers stick they alone follow the motion to the noise; the sliding
 // markers' normal residuals fix a turn a small sticking core does not, and bias a tilt where the contact's
-// edge bends the marker layer (decision record 0018).
+// edge bends the marker layer (decision record 0018); unless they carry their slide's model error, they turn
+// a finger that slides fast on a few sticking markers (decision record 0019).
 #include <gtest/gtest.h>
 
 #include <cstdio>
 #include <string>
 
 #include "observable_truth.hpp"
+#include "campaign_score.hpp"
+#include "sim/random_scenario.hpp"
+#include "sliding_surface.hpp"
 #include "replay_metrics.hpp"
 #include "sim_replay.hpp"
 #include "stick_oracle.hpp"
@@ -56,4 +60,44 @@ TEST(StickOracle, SlidingMarkersNormalsBiasAPlateTiltedAboutItsEdge) {
   std::printf("tip_flat_tip pitch: %.3f deg without the normal residuals, %.3f with\n", without.rmse[4],
               with.rmse[4]);
   EXPECT_GT(with.rmse[4], 5 * without.rmse[4]);
+}
+
+TEST(SlidingSurface, ASlideAlongTheSurfaceAddsItsShareToTheNoiseAndAMoveAlongTheNormalDoesNot) {
+  const Eigen::Vector3d n = Eigen::Vector3d::UnitZ();
+  EXPECT_DOUBLE_EQ(slidingSurfaceSd(0.001, Eigen::Vector3d::Zero(), n, 0.05), 0.001);
+  EXPECT_DOUBLE_EQ(slidingSurfaceSd(0.001, Eigen::Vector3d(0, 0, 0.3), n, 0.05), 0.001);  // that is the residual
+  // A 0.2 mm slide at f = 0.05 departs by 0.01 mm: u = sqrt(0.001^2 + 0.01^2).
+  EXPECT_NEAR(slidingSurfaceSd(0.001, Eigen::Vector3d(0.12, 0.16, 0.05), n, 0.05), std::hypot(0.001, 0.01), 1e-15);
+}
+
+TEST(StickOracle, SlidingMarkersNormalsTurnAFewStickingMarkersUnlessTheyCarryTheSlidesError) {
+  // A random campaign run: a sphere on a coarse 9 x 9 pattern (1.2 um noise) slides and turns with few
+  // markers sticking. With the noise alone as their sd, the sliding markers' normal residuals (each off by a
+  // few um under the true motion, mostly with the same sign) outweigh the sticking markers and turn the
+  // sphere 11 deg off what the pad sees; with their slide's model error about 2 deg.
+  const unsigned seed = 253;
+  const sim::RandomScenario rs = sim::randomScenario(seed);
+  ReplayOptions options;
+  options.noise_mm = 0.0003 * rs.conditions.noise_grey;
+  options.seed = seed;
+  const Recording recording = record(rs.scenario, options);
+  const auto worstTurnError = [&](bool sliding_error) {
+    std::vector<ReplayFrame> frames = track(recording, options.tracker);
+    StickOracleOptions oracle{options.noise_mm, OracleLabels::truth, true};
+    oracle.sliding_model_error = sliding_error;
+    applyStickOracle(recording, frames, oracle);
+    const std::vector<Input6> reference = observableTruth(frames);
+    double worst = 0;
+    for (size_t k = 0; k < frames.size(); ++k)
+      if (frames[k].gt_contact)
+        for (double e : {frames[k].raw.yaw - reference[k].yaw, frames[k].raw.pitch - reference[k].pitch,
+                         frames[k].raw.roll - reference[k].roll})
+          worst = std::max(worst, std::abs(e));
+    return worst;
+  };
+  const double noise_only = worstTurnError(false), with_error = worstTurnError(true);
+  std::printf("worst turn error: %.2f deg with the noise alone, %.2f with the slide's error\n", noise_only,
+              with_error);
+  EXPECT_GT(noise_only, 5.0);
+  EXPECT_LT(with_error, noise_only / 2);
 }

@@ -74,6 +74,23 @@ TEST(WeightedIncrement, WithNothingSeenThePriorHoldsTheMotion) {
   EXPECT_LT(got.translation().norm(), 1e-9);
 }
 
+TEST(WeightedIncrement, WithNothingSeenAPriorWithARateExpectsItsIncrement) {
+  // The prior's expected turn theta_p and move of c, v_p: with no evidence the solve returns exactly that
+  // increment about c, at no cost; evidence pulls it away in the directions it fixes.
+  WeightedIncrementProblem p;
+  p.centre = {0.5, -0.2, 8.0};
+  p.prior_turn_rad = Eigen::Vector3d(0.01, -0.02, 0.03);
+  p.prior_slide_mm = Eigen::Vector3d(0.05, 0.0, -0.01);
+  p.prior_turn_sd_rad = 0.01;
+  p.prior_slide_sd_mm = 0.01;
+  const Eigen::Isometry3d got = solveWeightedIncrement(p, Eigen::Isometry3d::Identity(), nullptr, 10);
+  const Eigen::AngleAxisd turn(got.linear());
+  EXPECT_LT((turn.angle() * turn.axis() - p.prior_turn_rad).norm(), 1e-9);
+  EXPECT_LT((got * p.centre - p.centre - p.prior_slide_mm).norm(), 1e-9);
+  EXPECT_NEAR(truncatedCost(p, got), 0.0, 1e-12);
+  EXPECT_GT(truncatedCost(p, Eigen::Isometry3d::Identity()), 1.0);  // holding the motion now costs
+}
+
 TEST(WeightedIncrement, ResidualsAreReportedInUnitsOfTheirSd) {
   std::mt19937 rng(7);
   const auto a = patch(5, rng);
