@@ -2,6 +2,7 @@
 // through the simulator, runs the SDK on every rendered frame, prints the
 // SDK's 6-D estimate beside the simulator's truth as it goes, and writes
 // est_pose.csv, the ground truth and a contact sheet of what the camera saw.
+// What the sensor says about itself goes to stderr (sensor_notices.hpp).
 // The folder appears whole at the end (an existing, non-empty one is refused);
 // Ctrl-C or SIGTERM stops after the current frame and writes the frames done.
 #include <cmath>
@@ -17,6 +18,7 @@
 #include "core/pose_csv.hpp"
 #include "interrupt.hpp"
 #include "output_paths.hpp"
+#include "sensor_notices.hpp"
 #include "pipeline/frame_processor.hpp"
 #include "sim/simulator.hpp"
 
@@ -47,11 +49,13 @@ int runDemo(const Args& args) {
   int both = 0;
   std::printf("%5s  %-44s | %-44s\n", "frame", "SDK estimate", "simulator truth");
   const InterruptHandlers handlers;  // SIGINT/SIGTERM: the frames done so far are written whole
+  SensorNotices notices("demo");     // the camera moved, markers hidden, ...: on stderr
   while (!sim.done() && !interruptRequested()) {
     const sim::GroundTruthFrame& f = sim.next();
     const cv::Mat frame = sim.render();
     const pipeline::FrameResult r = processor.process(frame, f.t);
     const Input6 e = r.pose.raw;
+    notices.report(f.index, r.pose.events);
     const bool contact = r.status == pipeline::FrameStatus::ok && r.pose.contact;
     est.row(poseCsvRow(f.index, contact, r.pose.state, e, r.pose.sd));
     truth.row(poseCsvRow(f.index, f.in_contact, f.state, f.input));

@@ -15,6 +15,7 @@
 #include "interrupt.hpp"
 #include "output_paths.hpp"
 #include "process_outputs.hpp"
+#include "sensor_notices.hpp"
 #include "pipeline/frame_processor.hpp"
 #include "pipeline/open_pipeline.hpp"
 
@@ -49,6 +50,7 @@ int runProcess(const Args& args) {
   int processed = 0, unreadable = 0, lost = 0, errors = 0, consecutive_errors = 0;
   std::vector<double> process_ms;
   const bool quiet = args.has("quiet");
+  SensorNotices notices("process");  // the camera moved, markers hidden, ...: on stderr, quiet or not
   // Ctrl-C or SIGTERM ends the stream: the frames done so far are written (a live camera ends only this way).
   const InterruptHandlers handlers;
   while (!interruptRequested()) {
@@ -78,6 +80,7 @@ int runProcess(const Args& args) {
       continue;
     }
     ++processed;
+    notices.report(frame.index, r.pose.events);
     pose.row(poseCsvRow(frame.index, r.pose.contact, r.pose.state, r.pose.raw, r.pose.sd));
     const std::string k = std::to_string(frame.index);
     if (markers)
@@ -133,7 +136,9 @@ const CommandRegistrar reg{{
     "Run the sensing pipeline over a frame source and write the 6-D pose per frame (pose.csv), optionally the 3-D "
     "markers (S, mm) and per-stage timings. Frames are numbered by their 0-based index in the source. A frame that "
     "cannot be read or used (damaged, the wrong size, blank) is skipped, named on stderr and counted in the summary; "
-    "when more than half of the frames are, the run fails (exit status 2) and writes nothing.",
+    "when more than half of the frames are, the run fails (exit status 2) and writes nothing. What the sensor says "
+    "about itself (the camera moved against the pad, markers hidden for good, a step limited) is printed on stderr "
+    "at the frame it begins.",
     {{"calib", "calibration file (docs/reference.md); optional for sim: sources", false, false},
      {"pattern", "marker pattern file; optional for sim: sources", false, false},
      {"input", "frames: a folder of PNGs, a video file, v4l2:/dev/videoN or sim:SCENARIO.yaml", false, true},

@@ -103,6 +103,9 @@ RestUpdate RestKeeper::update(const MarkerField& now, const MarkerField& referen
     have_t_ = false;
     missing_since_.assign(reference.position.size(), -1);
     reported_.assign(reference.position.size(), 0);
+    // A marker the rest state itself lacks was hidden before the sensor started: named with the first frame.
+    for (size_t i = 0; i < reference.position.size(); ++i)
+      if (!reference.valid[i]) out.hidden.push_back(static_cast<int>(i));
   }
   if (now.size() != rest_.size()) return out;  // the caller refuses a grid mismatch
   const double dt = have_t_ ? std::max(0.0, t - last_t_) : 0.0;

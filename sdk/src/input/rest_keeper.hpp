@@ -3,7 +3,10 @@
 // drifts with temperature, markers hidden for good.
 //
 // Out of contact every marker should sit on its rest position up to the
-// measured noise sigma (pose/sensor_self_model.hpp). Each frame whose
+// measured noise sigma (pose/sensor_self_model.hpp). A camera or mirror that
+// translates a view is corrected in the images before triangulation
+// (vision/view_shift.hpp); what reaches S here is what that leaves: the pad
+// moved in its housing, a camera that turned, slow drift. Each frame whose
 // predecessor was out of contact, with e_i = p_i - r_i (S, mm) over the
 // markers valid in both:
 //  - a shift of the whole field: the rigid motion G = argmin sum w_i
@@ -31,7 +34,8 @@
 //    drift_time_s is followed.
 // Markers valid at rest and missing for hidden_s seconds in a row are
 // reported once as hidden (a torn or dirty gel); they keep their ids and
-// rejoin when seen again.
+// rejoin when seen again. Markers the rest state itself lacks (a pad damaged
+// before the sensor started) are reported with the first frame after it.
 // A new reference from the caller (the pipeline's first frame or
 // Sensor::reReference()) replaces the kept rest.
 #pragma once

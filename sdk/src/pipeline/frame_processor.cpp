@@ -38,6 +38,7 @@ void FrameProcessorOptions::validate() const {
   detector.validate();
   tracker.validate();
   triangulator.validate();
+  view_shift.validate();
   pose.validate();
   if (min_markers < 3) throw InputError("frame processor: min_markers: must be at least 3");
 }
@@ -49,14 +50,18 @@ struct FrameProcessor::Impl {
   vision::CornerDetector detector;
   vision::GridTracker left, right;
   vision::Triangulator triangulator;
+  vision::ViewShiftKeeper view_shift;
   input::PoseTracker pose;
   bool has_reference = false;
+  bool last_contact = false;          // the last processed frame's contact
+  std::string view_shift_report;      // this frame's, for an event
   SensorFrame S;
   MarkerField rest_S;
 
   Impl(const StereoCalibration& c, const MarkerPattern& p, FrameProcessorOptions o)
       : calib(c), pattern(p), options(std::move(o)), detector(options.detector), left(p, options.tracker),
-        right(p, options.tracker), triangulator(c, options.triangulator), pose(options.pose) {}
+        right(p, options.tracker), triangulator(c, options.triangulator),
+        view_shift(c.flip_left, c.flip_right, options.view_shift), pose(options.pose) {}
 
   // Finds and identifies markers in both views. The rest frame is searched
   // whole and its grid built from the corners' links; later frames are
@@ -122,7 +127,11 @@ std::optional<MarkerField> FrameProcessor::Impl::measure(const cv::Mat& frame, b
   vision::ViewMarkers ml, mr;
   if (!findMarkers(views, initialize, r, ml, mr)) return std::nullopt;
   const auto t0 = Clock::now();
-  vision::TriangulationResult tri = triangulator.triangulate(ml, mr);
+  view_shift_report.clear();
+  if (!initialize && !last_contact)
+    view_shift_report = view_shift.update(left.rest(), right.rest(), ml, mr).report;
+  vision::TriangulationResult tri =
+      triangulator.triangulate(view_shift.correctedLeft(ml), view_shift.correctedRight(mr));
   r.times.triangulate = msSince(t0);
   if (tri.markers.validCount() < options.min_markers) {
     r.status = initialize ? FrameStatus::skipped : FrameStatus::lost;
@@ -145,6 +154,8 @@ FrameResult FrameProcessor::setReference(const cv::Mat& frame, double t) {
   m.rest_S = m.S.toSensor(*rest_L);
   m.has_reference = true;
   m.pose.reset();
+  m.view_shift.reset();
+  m.last_contact = false;
   r.markers = m.rest_S;
   r.status = FrameStatus::reference;
   return r;
@@ -165,6 +176,10 @@ FrameResult FrameProcessor::process(const cv::Mat& frame, double t) {
   auto t0 = Clock::now();
   r.pose = m.pose.update(r.markers, m.rest_S, t);
   const double contact_and_pose = msSince(t0);
+  m.last_contact = r.pose.contact;
+  if (!m.view_shift_report.empty())
+    r.pose.events.push_back(
+        {input::EventType::error, r.pose.t, r.pose.input, r.pose.sd, r.pose.state, m.view_shift_report});
   r.times.contact = r.pose.contact_ms;
   r.times.pose = contact_and_pose - r.pose.contact_ms;
   r.status = FrameStatus::ok;

@@ -2,8 +2,10 @@
 // 6-D input out: the SDK's deterministic, single-threaded core.
 //
 //   frame (grey, both views) -> split (ROIs, no copy) -> detect corners per view
-//   -> track ids per view -> triangulate ids seen in both (points undistorted,
-//   not images) -> S from the rest markers -> contact, stick/slip, pose, events
+//   -> track ids per view -> a moved mirror or camera corrected (after frames
+//   out of contact, vision/view_shift.hpp) -> triangulate ids seen in both
+//   (points undistorted, not images) -> S from the rest markers -> contact,
+//   stick/slip, pose, events
 //
 // The first frame given to setReference() (or process() before any reference)
 // is the rest state: it assigns the marker ids (anchored in each view,
@@ -26,6 +28,7 @@
 #include "vision/corner_detector.hpp"
 #include "vision/grid_tracker.hpp"
 #include "vision/triangulator.hpp"
+#include "vision/view_shift.hpp"
 
 namespace onetip::pipeline {
 
@@ -33,6 +36,7 @@ struct FrameProcessorOptions {
   vision::CornerDetectorOptions detector;
   vision::GridTrackerOptions tracker;
   vision::TriangulatorOptions triangulator;
+  vision::ViewShiftOptions view_shift;  // a mirror or the camera moved: corrected before triangulation
   input::PoseTrackerOptions pose;  // its marker_depth_mm is the pattern's (set by the constructor)
   int min_markers = 12;  // fewer triangulated markers: the frame is "lost" (no pose update)
   void validate() const;  // throws InputError naming the bad field

@@ -4,7 +4,10 @@
 // and, in the same run, what a user would pick instead: OpenCV's
 // findChessboardCornersSB or findChessboardCorners + cornerSubPix on both views.
 // Counters: front_end_ms (detect + track + triangulate, the processor's own
-// stage clocks) and process_ms (including contact and pose).
+// stage clocks) and process_ms (including contact and pose). BM_ViewShiftCheck
+// times what the processor adds on a frame out of contact to tell a moved
+// mirror or camera (vision/view_shift.hpp): the decision and the corrected
+// copies of both views, on this recording's 2-D markers.
 #include <benchmark/benchmark.h>
 
 #include <opencv2/calib3d.hpp>
@@ -14,6 +17,7 @@
 #include "capture/jpeg_grey_decoder.hpp"
 #include "pipeline/frame_processor.hpp"
 #include "sim/simulator.hpp"
+#include "vision/view_shift.hpp"
 #include "vision/view_split.hpp"
 
 using namespace onetip;
@@ -88,6 +92,23 @@ void BM_FrontEndFromMjpeg(benchmark::State& state) {
   });
 }
 BENCHMARK(BM_FrontEndFromMjpeg)->Unit(benchmark::kMillisecond);
+
+void BM_ViewShiftCheck(benchmark::State& state) {
+  const Recording& rec = recording();
+  pipeline::FrameProcessor processor(rec.calib, rec.pattern);
+  processor.setReference(rec.frames.front());
+  const vision::ViewMarkers rest_left = processor.leftViewMarkers(), rest_right = processor.rightViewMarkers();
+  processor.process(rec.frames[1], 0.0);  // a frame at rest: its corners differ from the reference's by noise
+  const vision::ViewMarkers& now_left = processor.leftViewMarkers();
+  const vision::ViewMarkers& now_right = processor.rightViewMarkers();
+  vision::ViewShiftKeeper keeper(rec.calib.flip_left, rec.calib.flip_right);
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(keeper.update(rest_left, rest_right, now_left, now_right));
+    benchmark::DoNotOptimize(keeper.correctedLeft(now_left));
+    benchmark::DoNotOptimize(keeper.correctedRight(now_right));
+  }
+}
+BENCHMARK(BM_ViewShiftCheck)->Unit(benchmark::kMicrosecond);
 
 // OpenCV's detector on both views of the same frames, then cornerSubPix.
 template <typename Find>

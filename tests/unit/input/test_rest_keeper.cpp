@@ -88,6 +88,21 @@ TEST(RestKeeper, MarkersMissingForTwoSecondsAreNamedOnce) {
   EXPECT_NE(describeHidden(reported).find("10, 33"), std::string::npos);
 }
 
+TEST(RestKeeper, MarkersMissingFromTheRestStateAreNamedWithTheFirstFrame) {
+  MarkerField rest = grid(9);
+  rest.valid[5] = rest.valid[71] = 0;  // damaged before the sensor started
+  RestKeeper keeper;
+  std::vector<int> reported;
+  for (int k = 0; k <= 90; ++k) {
+    const RestUpdate u = keeper.update(rest, rest, false, kNoise, 0.1, k / 30.0);
+    if (k > 0) {
+      EXPECT_TRUE(u.hidden.empty()) << "frame " << k;
+    }
+    reported.insert(reported.end(), u.hidden.begin(), u.hidden.end());
+  }
+  EXPECT_EQ(reported, (std::vector<int>{5, 71}));
+}
+
 TEST(RestKeeper, TenMinutesOfSlowDriftAtRestStartNoContact) {
   // The rest state swells by 0.1 mm over ten minutes (a thermal drift), the camera at 30 fps.
   std::mt19937 rng(3);
