@@ -130,10 +130,14 @@ void applyStickOracle(const Recording& rec, std::vector<ReplayFrame>& frames, co
         return ours(i) && i < prev.gt_contact_markers.size() && prev.gt_contact_markers[i];
       };
       if (stuck == 0) problem.footprint = commonFootprint(before, now, touched_both, depth, options.noise_mm);
+      // Without that error (the noise alone) one solve, as decision record 0018 measured it.
       slidesBy(last_increment);
-      const Eigen::Isometry3d first = pose::solveWeightedIncrement(problem, Eigen::Isometry3d::Identity(), nullptr, 5);
-      slidesBy(first);
-      T = pose::solveWeightedIncrement(problem, first, nullptr, 5) * T;
+      Eigen::Isometry3d increment = pose::solveWeightedIncrement(problem, Eigen::Isometry3d::Identity(), nullptr, 5);
+      if (options.sliding_model_error) {
+        slidesBy(increment);
+        increment = pose::solveWeightedIncrement(problem, increment, nullptr, 5);
+      }
+      T = increment * T;
     }
     last_increment = T * T_before.inverse();
     std::map<size_t, Eigen::Vector3d> kept;
