@@ -18,6 +18,7 @@ void PoseTrackerOptions::validate() const {
   rest.validate();
   recovery.validate();
   creep.validate();
+  onset.validate();
   for (double r : working_range) requireAbove("pose tracker: working_range entries", r, 0);
   requireAtLeast("pose tracker: clamp_factor", clamp_factor, 1);
   requireInRange("pose tracker: marker_depth_mm", marker_depth_mm, 0, MarkerPattern::kMaxMarkerDepthMm, "mm");
@@ -30,6 +31,7 @@ PoseTracker::PoseTracker(PoseTrackerOptions options)
       rest_keeper_(options_.rest),
       recovery_(options_.recovery),
       creep_(options_.creep),
+      onset_band_(options_.onset),
       estimator_(options_.pose),
       filter_(makeInputFilter(options_.filter)),
       button_(options_.press) {}
@@ -41,6 +43,7 @@ void PoseTracker::reset() {
   rest_keeper_.reset();
   recovery_.reset();
   creep_.reset();
+  onset_band_.reset();
   last_ = TrackerResult{};
 }
 
@@ -96,6 +99,10 @@ TrackerResult PoseTracker::update(const MarkerField& now_S, const MarkerField& r
          "too few valid markers (" + std::to_string(held.field.valid_markers) + "): output held");
     return held;
   }
+  // A field sinking through the threshold (a creeping gel after a lift-off) begins no contact from noise.
+  const bool may_begin = onset_band_.mayBegin(r.field.max_modulus_mm, r.field.valid_markers,
+                                              self_.current().noise_mm, options_.contact.contact_threshold_mm);
+  if (!last_.contact && r.field.in_contact && !may_begin) clearContact(r.field);
   self_.setRest(rest_S);
   self_.observe(unloaded, t, !r.field.in_contact && !recovering);  // a recovering gel moves: not noise
   r.step = estimator_.update(r.field, now, self_.current());

@@ -7,6 +7,8 @@
 //   -> contact analysis (contact/contact_analyzer.hpp), without the gel's
 //      creep once a held press has measured it (gel_creep.hpp) and without the
 //      deformation of a gel recovering after the finger left (gel_recovery.hpp)
+//   -> no contact begins from noise while a field that sank through the
+//      contact threshold is still within the noise of it (onset_band.hpp)
 //   -> what the sensor measures about itself (pose/sensor_self_model.hpp:
 //      marker noise on the frames out of contact, pitch, frame interval)
 //   -> stick/slip labels and the finger's increment (pose/adaptive_pose_estimator.hpp)
@@ -30,6 +32,7 @@
 #include "input/gel_creep.hpp"
 #include "input/gel_recovery.hpp"
 #include "input/input_shaping.hpp"
+#include "input/onset_band.hpp"
 #include "input/pose_accumulator.hpp"
 #include "input/press_button.hpp"
 #include "input/rest_keeper.hpp"
@@ -48,6 +51,7 @@ struct PoseTrackerOptions {
   RestKeeperOptions rest;
   GelRecoveryOptions recovery;
   GelCreepOptions creep;
+  OnsetBandOptions onset;
   // The paper's working range (Eq. 18): |dx|, |dy| <= 4 mm, dz <= 3 mm,
   // |yaw| <= 15 deg, |pitch|, |roll| <= 40 deg. Beyond it the result says
   // out_of_range; `raw` is clamped to clamp_factor times it.
@@ -98,6 +102,7 @@ class PoseTracker {
   RestKeeper rest_keeper_;
   GelRecovery recovery_;
   GelCreep creep_;
+  OnsetBand onset_band_;
   pose::AdaptivePoseEstimator estimator_;
   PoseAccumulator accumulator_;
   std::unique_ptr<InputFilter> filter_;
