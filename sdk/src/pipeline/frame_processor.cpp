@@ -130,8 +130,8 @@ std::optional<MarkerField> FrameProcessor::Impl::measure(const cv::Mat& frame, b
   view_shift_report.clear();
   if (!initialize && !last_contact)
     view_shift_report = view_shift.update(left.rest(), right.rest(), ml, mr).report;
-  vision::TriangulationResult tri =
-      triangulator.triangulate(view_shift.correctedLeft(ml), view_shift.correctedRight(mr));
+  view_shift.correct(ml, mr);
+  vision::TriangulationResult tri = triangulator.triangulate(ml, mr);
   r.times.triangulate = msSince(t0);
   if (tri.markers.validCount() < options.min_markers) {
     r.status = initialize ? FrameStatus::skipped : FrameStatus::lost;

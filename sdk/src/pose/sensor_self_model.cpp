@@ -5,17 +5,11 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "core/median.hpp"
 
 namespace onetip::pose {
 
 namespace {
-
-double median(std::vector<double> v) {
-  if (v.empty()) return 0;
-  const auto mid = v.begin() + static_cast<long>(v.size() / 2);
-  std::nth_element(v.begin(), mid, v.end());
-  return *mid;
-}
 
 void pushBounded(std::deque<double>& q, double v, int window) {
   q.push_back(v);
@@ -53,13 +47,13 @@ void SensorSelfModel::setRest(const MarkerField& rest) {
       const size_t below = i + static_cast<size_t>(rest.cols);
       if (r + 1 < rest.rows && rest.valid[below]) gaps.push_back((rest.position[below] - rest.position[i]).norm());
     }
-  if (!gaps.empty()) self_.pitch_mm = median(std::move(gaps));
+  if (!gaps.empty()) self_.pitch_mm = upperMedian(std::move(gaps));
 }
 
 void SensorSelfModel::observe(const MarkerField& now, double t, bool at_rest) {
   if (have_t_ && t > last_t_) {
     pushBounded(dt_samples_, t - last_t_, options_.window);
-    self_.frame_s = median({dt_samples_.begin(), dt_samples_.end()});
+    self_.frame_s = upperMedian({dt_samples_.begin(), dt_samples_.end()});
   }
   last_t_ = t;
   have_t_ = true;
@@ -75,9 +69,9 @@ void SensorSelfModel::observe(const MarkerField& now, double t, bool at_rest) {
       for (int k = 0; k < 3; ++k) squares.push_back(d[k] * d[k]);
     }
     if (squares.size() >= 9) {
-      const double sigma = std::sqrt(median(std::move(squares)) / kChi2OneMedian / 2.0);
+      const double sigma = std::sqrt(upperMedian(std::move(squares)) / kChi2OneMedian / 2.0);
       pushBounded(noise_samples_, sigma, options_.window);
-      self_.noise_mm = median({noise_samples_.begin(), noise_samples_.end()});
+      self_.noise_mm = upperMedian({noise_samples_.begin(), noise_samples_.end()});
       self_.noise_measured = true;
     }
   }

@@ -9,6 +9,7 @@
 
 #include "capture/open_frame_source.hpp"
 #include "core/error.hpp"
+#include "core/median.hpp"
 #include "gl/gl_api.hpp"
 #include "gl/headless_context.hpp"
 #include "gl/offscreen_target.hpp"
@@ -23,12 +24,6 @@ namespace onetip::viewer {
 namespace {
 using Clock = std::chrono::steady_clock;
 double msSince(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
-
-double median(std::vector<double> v) {
-  if (v.empty()) return 0;
-  std::nth_element(v.begin(), v.begin() + static_cast<long>(v.size() / 2), v.end());
-  return v[v.size() / 2];
-}
 
 constexpr const char* kVirtualInput = "sim:virtual";
 
@@ -211,11 +206,11 @@ ViewerReport runViewer(const ViewerOptions& o, const FrameObserver& observer) {
   if (recorder) recorder->finish();
   if (pose_log) pose_log->commit();
   report.loop_fps = wall_s > 0 ? report.drawn / wall_s : 0;
-  report.median_source_ms = median(source_ms);
-  report.median_process_ms = median(process_ms);
-  report.median_draw_ms = median(draw_ms);
-  report.median_readback_ms = median(readback_ms);
-  report.median_present_ms = median(present_ms);
+  report.median_source_ms = upperMedian(source_ms);
+  report.median_process_ms = upperMedian(process_ms);
+  report.median_draw_ms = upperMedian(draw_ms);
+  report.median_readback_ms = upperMedian(readback_ms);
+  report.median_present_ms = upperMedian(present_ms);
   return report;
 }
 

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "core/median.hpp"
 #include "core/option_checks.hpp"
 
 namespace onetip::vision {
@@ -27,12 +28,6 @@ void ViewShiftKeeper::reset() {
 }
 
 namespace {
-
-double median(std::vector<double> v) {
-  const auto mid = v.begin() + static_cast<long>(v.size() / 2);
-  std::nth_element(v.begin(), mid, v.end());
-  return *mid;
-}
 
 // One view's common translation t (view px) against its rest, the noise sigma of the corners about it, and
 // whether every corner lies within bound of t.
@@ -57,13 +52,13 @@ ViewMotion viewMotion(const ViewMarkers& rest, const ViewMarkers& now, const cv:
     xs.push_back(p.x);
     ys.push_back(p.y);
   }
-  m.t = {median(xs), median(ys)};
+  m.t = {upperMedian(xs), upperMedian(ys)};
   std::vector<double> abs_e;
   for (const auto& p : d) {
     abs_e.push_back(std::abs(p.x - m.t.x));
     abs_e.push_back(std::abs(p.y - m.t.y));
   }
-  m.sigma = std::max(1.4826 * median(abs_e), o.min_sigma_px);
+  m.sigma = std::max(1.4826 * upperMedian(abs_e), o.min_sigma_px);
   m.t_sd = 1.2533 * m.sigma / std::sqrt(static_cast<double>(d.size()));
   const double bound = o.move_sigmas * m.sigma;
   m.together = std::all_of(d.begin(), d.end(), [&](const cv::Point2d& p) { return cv::norm(p - m.t) <= bound; });
@@ -110,12 +105,13 @@ ViewShiftUpdate ViewShiftKeeper::update(const ViewMarkers& rest_left, const View
   return out;
 }
 
-ViewMarkers ViewShiftKeeper::corrected(const ViewMarkers& now, const cv::Point2d& offset) {
-  ViewMarkers out = now;
-  if (offset.x == 0 && offset.y == 0) return out;
-  for (size_t i = 0; i < out.point.size(); ++i)
-    out.point[i] -= cv::Point2f(static_cast<float>(offset.x), static_cast<float>(offset.y));
-  return out;
+void ViewShiftKeeper::correct(ViewMarkers& left, ViewMarkers& right) const {
+  ViewMarkers* views[2] = {&left, &right};
+  for (int v = 0; v < 2; ++v) {
+    if (offset_[v].x == 0 && offset_[v].y == 0) continue;
+    const cv::Point2f o(static_cast<float>(offset_[v].x), static_cast<float>(offset_[v].y));
+    for (cv::Point2f& p : views[v]->point) p -= o;
+  }
 }
 
 }  // namespace onetip::vision

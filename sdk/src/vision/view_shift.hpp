@@ -67,14 +67,12 @@ class ViewShiftKeeper {
   ViewShiftUpdate update(const ViewMarkers& rest_left, const ViewMarkers& rest_right, const ViewMarkers& now_left,
                          const ViewMarkers& now_right);
   // The corners with the offset so far taken away (view px), for triangulation.
-  ViewMarkers correctedLeft(const ViewMarkers& now) const { return corrected(now, offset_[0]); }
-  ViewMarkers correctedRight(const ViewMarkers& now) const { return corrected(now, offset_[1]); }
+  // Takes each view's offset off its corners, in place (nothing to do while no view has moved).
+  void correct(ViewMarkers& left, ViewMarkers& right) const;
   cv::Point2d offset(int view) const { return offset_[view]; }
   void reset();
 
  private:
-  static ViewMarkers corrected(const ViewMarkers& now, const cv::Point2d& offset);
-
   bool flip_[2];
   ViewShiftOptions options_;
   cv::Point2d offset_[2];

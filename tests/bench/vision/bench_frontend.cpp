@@ -99,13 +99,12 @@ void BM_ViewShiftCheck(benchmark::State& state) {
   processor.setReference(rec.frames.front());
   const vision::ViewMarkers rest_left = processor.leftViewMarkers(), rest_right = processor.rightViewMarkers();
   processor.process(rec.frames[1], 0.0);  // a frame at rest: its corners differ from the reference's by noise
-  const vision::ViewMarkers& now_left = processor.leftViewMarkers();
-  const vision::ViewMarkers& now_right = processor.rightViewMarkers();
+  vision::ViewMarkers now_left = processor.leftViewMarkers(), now_right = processor.rightViewMarkers();
   vision::ViewShiftKeeper keeper(rec.calib.flip_left, rec.calib.flip_right);
   for (auto _ : state) {
     benchmark::DoNotOptimize(keeper.update(rest_left, rest_right, now_left, now_right));
-    benchmark::DoNotOptimize(keeper.correctedLeft(now_left));
-    benchmark::DoNotOptimize(keeper.correctedRight(now_right));
+    keeper.correct(now_left, now_right);
+    benchmark::DoNotOptimize(now_left.point.data());
   }
 }
 BENCHMARK(BM_ViewShiftCheck)->Unit(benchmark::kMicrosecond);

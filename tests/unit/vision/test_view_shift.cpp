@@ -53,8 +53,12 @@ TEST(ViewShift, OneViewTranslatedIsItsMirrorAndIsCorrected) {
   EXPECT_NEAR(keeper.offset(0).x, 2, 0.01);
   EXPECT_NEAR(keeper.offset(0).y, -1, 0.01);
   EXPECT_EQ(keeper.offset(1), cv::Point2d(0, 0));
-  const ViewMarkers again = keeper.correctedLeft(moved(rl, {2, -1}, rng));
-  EXPECT_NEAR(again.point[0].x, rl.point[0].x, 0.1);
+  ViewMarkers again_left = moved(rl, {2, -1}, rng), again_right = moved(rr, {0, 0}, rng);
+  const ViewMarkers right_before = again_right;
+  keeper.correct(again_left, again_right);
+  EXPECT_NEAR(again_left.point[0].x, rl.point[0].x, 0.1);
+  EXPECT_NEAR(again_left.point[0].y, rl.point[0].y, 0.1);
+  EXPECT_EQ(again_right.point, right_before.point);  // the right view did not move: left as measured
 }
 
 TEST(ViewShift, BothViewsAlikeInTheDeliveredFrameIsTheCamera) {
