@@ -1,6 +1,7 @@
 #!/usr/bin/python3
 """What the stick labels cost: the campaign judged against the observable truth, played by each estimator and by
-the stick-label oracle (tests/unit/pose/stick_oracle.hpp; decision records 0018 and 0019).
+the stick-label oracle (tests/unit/pose/stick_oracle.hpp; decision records 0018, 0019 and 0020; TLS: the
+truncated least-squares cost of pose/weighted_increment.hpp).
 
 Input: the CSVs docs/pose/stick_oracle.sh writes to docs/pose/data/stick_oracle/ (pose_campaign rows, seeds
 1-300, field level). Outputs:
@@ -27,6 +28,9 @@ PLAYS = [  # file stem, label
     ("adaptive", "adaptive\n(default)"),
     ("adaptive.labels", "oracle with\nadaptive's labels"),
     ("adaptive.true_labels", "... only its\ntrue ones"),
+    ("adaptive.touching_labels", "... only those on\ntouched markers"),
+    ("adaptive.labels.reweighted", "adaptive's labels,\nthen the TLS cost"),
+    ("adaptive.touching_labels.reweighted", "... on touched\nmarkers, then TLS"),
     ("weighted", "weighted\n(prototype)"),
     ("weighted.labels", "oracle with\nweighted's labels"),
     ("weighted.true_labels", "... only its\ntrue ones"),
@@ -34,6 +38,9 @@ PLAYS = [  # file stem, label
     ("truth.noise_only_slides", "... slip normals'\nsd the noise alone"),
     ("truth.no_slip_normals", "... without the\nslip normals"),
     ("truth.constant_rate", "... a constant\nrate as its prior"),
+    ("truth.reweighted", "the truth's labels,\nthen the TLS cost"),
+    ("none.reweighted", "no labels: TLS\nframe to frame"),
+    ("self", "TLS with the\nanchors as memory"),
 ]
 DENSITY_BINS = [(9, 11), (13, 15), (17, 19), (21, 25)]  # markers per side
 
@@ -83,7 +90,7 @@ def main():
             f.write(f"truth.either_variant,{name},150,{both},{both_strict}" + "," * (len(keys) - 3) + "\n")
     even_both, even_both_strict = diverged_in_both(plays, False)
 
-    fig, (ax, ax2) = plt.subplots(1, 2, figsize=(17, 5), gridspec_kw={"width_ratios": [2.5, 1]})
+    fig, (ax, ax2) = plt.subplots(1, 2, figsize=(24, 5.5), gridspec_kw={"width_ratios": [4, 1]})
     x = range(len(PLAYS))
     for offset, (name, odd, colour) in zip((-0.2, 0.2), (("odd seeds (tuned on)", True, "#9ecae1"),
                                                         ("even seeds (acceptance)", False, "#08519c"))):

@@ -55,8 +55,11 @@ StickInformation stickInformation(const std::vector<Eigen::Vector3d>& points, co
   }
   h /= sigma_mm * sigma_mm * total;  // one marker's information at the set's spread (see the header)
   // A single point (or coincident ones) has no radius: its turns are unfixed at any scale, so 1 mm
-  // keeps the scaled matrix defined.
-  const double g = spread > 0 ? std::sqrt(spread / total) : 1.0;
+  // keeps the scaled matrix defined. So is a set whose radius of gyration is within the marker noise
+  // (weights that sit on one marker): scaled by such a radius, its turn would count as fixed to sigma / g
+  // rad, without bound as g -> 0.
+  const double gyration = std::sqrt(spread / total);
+  const double g = gyration > sigma_mm ? gyration : 1.0;
   out.gyration_mm = g;
   const Matrix6d s_inv = scaling(g).inverse();
   const Eigen::SelfAdjointEigenSolver<Matrix6d> eig(s_inv * h * s_inv);

@@ -70,9 +70,11 @@ constexpr const char* kUsage =
     "                     [--sd-relative F] [--sd-turn DEG_PER_SQRT_S] [--sd-slide MM_PER_SQRT_S]\n"
     "                     (pose::PoseUncertaintyOptions, for tuning the reported sd on the odd seeds)\n"
     "                     [--policy adaptive|weighted]  (the estimator: pose::ModelPolicy; default adaptive)\n"
-    "                     [--oracle truth|estimate|estimate-true]  (stick_oracle.hpp: anchors registered with the\n"
-    "                     truth's stick labels, the ceiling; with the policy's own; or with those of its own that\n"
-    "                     are true. The estimate is replaced by the oracle's)\n"
+    "                     [--oracle truth|estimate|estimate-true|estimate-touching|none|self]  (stick_oracle.hpp:\n"
+    "                     anchors registered with the truth's stick labels, the ceiling; with the policy's own; with\n"
+    "                     those of its own that are true; its own on the touched markers; none; the oracle's own\n"
+    "                     from the reweighting. The estimate is replaced by the oracle's)\n"
+    "                     [--oracle-reweight 1]  (then every marker its cheapest case under the truncated cost)\n"
     "                     [--oracle-slip-normals 0]  (the oracle without the sliding markers' normal residuals)\n"
     "                     [--oracle-sliding-error 0]  (their sd the noise alone, without their slide's model error)\n"
     "                     [--oracle-prior-rate-tau S]  (the oracle's motion prior: 0 holds the motion (default);\n"
@@ -113,8 +115,14 @@ Args parse(int argc, char** argv) {
       if (v == "truth") a.oracle_options.labels = OracleLabels::truth;
       else if (v == "estimate") a.oracle_options.labels = OracleLabels::estimate;
       else if (v == "estimate-true") a.oracle_options.labels = OracleLabels::estimate_true;
-      else usageError("--oracle must be truth, estimate or estimate-true");
+      else if (v == "estimate-touching") a.oracle_options.labels = OracleLabels::estimate_touching;
+      else if (v == "none") a.oracle_options.labels = OracleLabels::none;
+      else if (v == "self") {
+        a.oracle_options.labels = OracleLabels::self;
+        a.oracle_options.reweight = true;  // its labels are the reweighting's
+      } else usageError("--oracle must be truth, estimate, estimate-true, estimate-touching, none or self");
     }
+    else if (k == "--oracle-reweight") a.oracle_options.reweight = v != "0";
     else if (k == "--oracle-slip-normals") a.oracle_options.slip_normals = v != "0";
     else if (k == "--oracle-sliding-error") a.oracle_options.sliding_model_error = v != "0";
     else if (k == "--oracle-prior-rate-tau") {

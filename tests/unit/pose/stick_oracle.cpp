@@ -1,8 +1,10 @@
 #include "stick_oracle.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <optional>
+#include <set>
 
 #include "campaign_score.hpp"
 #include "contact/surface_normals.hpp"
@@ -43,6 +45,7 @@ void applyStickOracle(const Recording& rec, std::vector<ReplayFrame>& frames, co
   Eigen::Isometry3d T = Eigen::Isometry3d::Identity();     // the finger since onset (S, mm)
   Eigen::Isometry3d last_increment = Eigen::Isometry3d::Identity();  // T_{k-1} T_{k-2}^-1
   std::map<size_t, Eigen::Vector3d> anchors;  // marker -> its surface point on the finger (onset coordinates)
+  std::set<size_t> held;  // OracleLabels::self: the markers labelled for the next frame
   std::vector<Eigen::Vector3d> normal;
   std::vector<std::uint8_t> normal_valid;
   for (size_t k = 0; k < frames.size() && k < rec.truth.size(); ++k) {
@@ -61,6 +64,7 @@ void applyStickOracle(const Recording& rec, std::vector<ReplayFrame>& frames, co
       anchors.clear();
     }
     const Eigen::Isometry3d T_before = T;
+    std::set<size_t> slipped;  // carrying markers the reweighting let slip this frame
     const Eigen::Vector3d& c0 = f.gt_c0;
     const auto ours = [&](size_t i) {
       return now.valid[i] && f.gt_contact_markers[i] && (f.gt_followed.empty() || f.gt_followed[i]);
@@ -72,12 +76,16 @@ void applyStickOracle(const Recording& rec, std::vector<ReplayFrame>& frames, co
         case OracleLabels::truth: return truly;
         case OracleLabels::estimate: return labelled;
         case OracleLabels::estimate_true: return labelled && truly;
+        case OracleLabels::estimate_touching: return labelled && ours(i);
+        case OracleLabels::none: return false;
+        case OracleLabels::self: return ours(i) && (onset || held.count(i) > 0);
       }
       return false;
     };
     std::vector<size_t> sticking;
     for (size_t i = 0; i < static_cast<size_t>(now.size()); ++i)
       if (sticks(i)) sticking.push_back(i);
+    if (onset) held = std::set<size_t>(sticking.begin(), sticking.end());
     if (!onset && noMarkerSticksThrough(frames[k - 1], f)) {  // the observable truth's move, the turn held
       const ReplayFrame& prev = frames[k - 1];
       if (f.gt_footprint_valid && prev.gt_footprint_valid)
@@ -99,6 +107,8 @@ void applyStickOracle(const Recording& rec, std::vector<ReplayFrame>& frames, co
         problem.prior_slide_mm = decay * (last_increment * problem.centre - problem.centre);
       }
       int stuck = 0;
+      std::vector<size_t> ids;     // per problem marker: its id
+      std::vector<bool> carried;   // ... whether it carried the finger as labelled
       std::vector<bool> slides;  // per problem marker: whether its normal residual takes slidingSurfaceSd
       for (size_t i = 0; i < static_cast<size_t>(now.size()); ++i) {
         if (!before.valid[i] || !(ours(i) || sticks(i))) continue;
@@ -114,6 +124,8 @@ void applyStickOracle(const Recording& rec, std::vector<ReplayFrame>& frames, co
         m.sd_mm = std::sqrt(2.0) * options.noise_mm;
         problem.markers.push_back(m);
         slides.push_back(!carries && options.sliding_model_error);
+        ids.push_back(i);
+        carried.push_back(carries);
         stuck += carries ? 1 : 0;
       }
       // A sliding marker's normal residual carries its slide's model error (slidingSurfaceSd): the slide is
@@ -137,11 +149,28 @@ void applyStickOracle(const Recording& rec, std::vector<ReplayFrame>& frames, co
         slidesBy(increment);
         increment = pose::solveWeightedIncrement(problem, increment, nullptr, 5);
       }
+      if (options.reweight) {  // every marker its cheapest case; a carrying marker that slips is re-anchored
+        increment = pose::solveByReweighting(problem, increment);
+        const auto carries_now = [](const pose::WeightedMarker& m) { return m.weight >= 0.5; };
+        if (problem.footprint && std::any_of(problem.markers.begin(), problem.markers.end(), carries_now)) {
+          problem.footprint.reset();  // the footprint carries the slide only while no marker sticks
+          increment = pose::solveByReweighting(problem, increment);
+        }
+        for (size_t j = 0; j < problem.markers.size(); ++j)
+          if (carried[j] && problem.markers[j].weight < 0.5) slipped.insert(ids[j]);
+        held.clear();  // the self labels of the next frame: every marker that carried or moved with the finger
+        for (size_t j = 0; j < problem.markers.size(); ++j)
+          if (carried[j] || problem.markers[j].weight >= 0.5) held.insert(ids[j]);
+      }
       T = increment * T;
     }
     last_increment = T * T_before.inverse();
     std::map<size_t, Eigen::Vector3d> kept;
     for (size_t i : sticking) {
+      if (slipped.count(i)) {  // it sticks again where it now is
+        kept[i] = T.inverse() * (now.position[i] + depth);
+        continue;
+      }
       const auto a = anchors.find(i);
       kept[i] = a != anchors.end() ? a->second : Eigen::Vector3d(T.inverse() * (now.position[i] + depth));
       f.stick[i] = 1;

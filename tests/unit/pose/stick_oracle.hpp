@@ -50,7 +50,12 @@ namespace onetip::poseval {
 // give with everything else as the oracle does it); or those of the
 // estimate's labels that are true (its false stick labels removed, its missed
 // ones still missed: what the labels' precision alone costs).
-enum class OracleLabels { truth, estimate, estimate_true };
+// Three more, with the reweighting below: estimate_touching, the estimate's labels on the markers whose
+// nodes touch the followed finger (what its labels outside the touch cost); none, no marker labelled
+// (frame-to-frame registration by the truncated cost alone); self, the oracle's own (every touched marker
+// at onset, then each that carried the finger or moved with it over the last frame: the truncated cost
+// with the anchors as its memory).
+enum class OracleLabels { truth, estimate, estimate_true, estimate_touching, none, self };
 
 struct StickOracleOptions {
   double noise_mm = 0.0006;  // marker noise per axis (mm), as the recording's
@@ -65,6 +70,12 @@ struct StickOracleOptions {
   // The motion prior's rate time constant tau (s): 0 holds the motion; tau > 0 expects the last increment
   // again, scaled by exp(-dt / tau) (infinity: a constant rate).
   double prior_rate_tau_s = 0;
+  // After the labelled solve, every marker takes its cheapest case under the truncated cost
+  // (pose/weighted_increment.hpp: solveByReweighting) and the increment is solved again: a labelled marker
+  // whose anchor the motion no longer carries slips and is anchored anew where it is (unlabelled for the
+  // frame), and a marker the labels do not carry that moved with the finger over the frame (its anchor is
+  // where it was) carries this frame's increment, without gaining an anchor or a label.
+  bool reweight = false;
 };
 
 // Replaces each frame's estimate (contact, raw, composed, stick labels) by the

@@ -48,6 +48,20 @@ TEST(PoseUncertainty, ASymmetricGridFixesEverythingWithTheLeastSquaresVariance) 
   EXPECT_NEAR(half.fixed_covariance(3, 3), info.fixed_covariance(3, 3), 1e-15);
 }
 
+TEST(PoseUncertainty, WeightsThatSitOnOneMarkerFixNoTurnAndTheTurnTakesThePrior) {
+  // Two markers 2 mm apart, the second's weight 1e-200: the set's radius of gyration is 1e-100 mm, far
+  // within the noise. It is a point: its turns are unfixed, and after one frame each turn's sd is the
+  // prior's, 10 deg/sqrt(s) over 1/30 s (1.83 deg), not sigma / g.
+  const std::vector<Eigen::Vector3d> pts = {{0, 0, 0}, {2, 0, 0}};
+  const StickInformation info = stickInformation(pts, {1.0, 1e-200}, Eigen::Vector3d::Zero(), 0.001, 0.01);
+  EXPECT_EQ(info.fixed_directions, 3);  // a point fixes its own displacement only
+  PoseUncertainty u(priorOnly(10, 0));
+  u.reset(Eigen::Vector3d::Zero());
+  u.add(info, Eigen::Isometry3d::Identity(), 1.0 / 30);
+  const Input6 sd = u.sd();
+  for (double turn : {sd.yaw, sd.pitch, sd.roll}) EXPECT_NEAR(turn, 10 * std::sqrt(1.0 / 30), 1e-6);
+}
+
 TEST(PoseUncertainty, ALineDoesNotFixTheTurnAboutItselfAndThatTurnGrowsAsThePriorSays) {
   std::vector<Eigen::Vector3d> line;
   for (int i = -3; i <= 3; ++i) line.push_back({0.5 * i, 0, 0});
