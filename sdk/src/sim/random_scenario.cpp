@@ -93,13 +93,17 @@ void measureSpeeds(const IndenterTrack& track, RandomConditions& c) {
 }
 
 // The world effects, each on with probability 1/2 (random_scenario.hpp).
-WorldEffects drawWorldEffects(Draw& d, double duration) {
+WorldEffects drawWorldEffects(Draw& d, double duration, std::optional<WorldEffect> only) {
   WorldEffects w;
-  if (d.chance(0.5)) {
+  const auto on = [&](WorldEffect e) {
+    const bool drawn = d.chance(0.5);
+    return only ? *only == e : drawn;
+  };
+  if (on(WorldEffect::creep)) {
     w.viscoelastic.relaxation = d.uniform(0.1, 0.4);
     w.viscoelastic.time_s = d.logUniform(0.05, 5);
   }
-  if (d.chance(0.5)) {
+  if (on(WorldEffect::camera_shift)) {
     const double size = d.uniform(1, 5), angle = d.uniform(0, 2 * std::numbers::pi);
     w.camera_shift.shift_px = {size * std::cos(angle), size * std::sin(angle)};
     const double which = d.uniform(0, 1);
@@ -109,16 +113,16 @@ WorldEffects drawWorldEffects(Draw& d, double duration) {
     w.camera_shift.at_s = d.uniform(0, duration);
     w.camera_shift.ramp_s = d.chance(0.5) ? 0.0 : d.uniform(0.2, 2);
   }
-  if (d.chance(0.5)) {
+  if (on(WorldEffect::damage)) {
     w.damage.fraction = d.uniform(0.01, 0.05);
     w.damage.seed = static_cast<unsigned>(d.integer(0, 1 << 30));
   }
-  if (d.chance(0.5)) {
+  if (on(WorldEffect::light)) {
     w.light.flicker = d.uniform(0, 0.1);
     w.light.exposure_step = d.uniform(-0.3, 0.3);
     w.light.step_at_s = d.uniform(0, duration);
   }
-  if (d.chance(0.5)) {
+  if (on(WorldEffect::drift)) {
     w.drift.expansion = d.uniform(-0.003, 0.003);
     w.drift.offset_mm = {d.uniform(-0.05, 0.05), d.uniform(-0.05, 0.05), d.uniform(-0.05, 0.05)};
     w.drift.time_s = d.logUniform(30, 600);
@@ -128,7 +132,7 @@ WorldEffects drawWorldEffects(Draw& d, double duration) {
 
 }  // namespace
 
-RandomScenario randomScenario(unsigned seed, bool world_effects) {
+RandomScenario randomScenario(unsigned seed, bool world_effects, std::optional<WorldEffect> only) {
   Draw d(seed);
   RandomScenario out;
   RandomConditions& c = out.conditions;
@@ -212,7 +216,7 @@ RandomScenario randomScenario(unsigned seed, bool world_effects) {
   c.world_effects = world_effects;
   if (world_effects) {
     Draw world(seed ^ 0x5A17E0u);  // its own stream: the draws above are the same with the flag off
-    sc.world = drawWorldEffects(world, sc.duration());
+    sc.world = drawWorldEffects(world, sc.duration(), only);
   }
   return out;
 }

@@ -37,8 +37,13 @@
 // step or a ramp of 0.2-2 s; 1-5 % of the markers hidden; flicker of 0-10 %
 // and an exposure step of -30..+30 % at a random time; rest drift (lateral
 // strain -0.3..+0.3 %, offsets up to 0.05 mm, time constant 30-600 s).
+// With `only` set, that one effect is on in every run and the others off,
+// its size drawn from the same ranges (the same value as the full draw's
+// where the effects drawn before it are off there too), so one effect's runs
+// compare with their twins without it one cause at a time.
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "sim/scenario.hpp"
@@ -64,6 +69,9 @@ struct RandomScenario {
   RandomConditions conditions;
 };
 
-RandomScenario randomScenario(unsigned seed, bool world_effects = false);
+enum class WorldEffect { creep, camera_shift, damage, light, drift };
+
+RandomScenario randomScenario(unsigned seed, bool world_effects = false,
+                              std::optional<WorldEffect> only = std::nullopt);
 
 }  // namespace onetip::sim

@@ -10,7 +10,9 @@
 // With --world 1 every run draws the world effects too (randomScenario(seed,
 // true): a creeping gel, a camera shift, hidden markers, flicker, drift; each
 // in half the runs) and the last columns give their sizes and the contact
-// events (tests/unit/pose/contact_events.hpp: late contact ends, false onsets).
+// events (tests/unit/pose/contact_events.hpp: late contact ends, false onsets);
+// --world-only EFFECT puts that one effect in every run and no other, so
+// its runs and their twins without it (--world 0, same seeds) differ by one cause.
 // Usage: pose_campaign --out runs.csv [--runs N] [--image-runs M]
 //          [--image-max-frames F] [--first-seed S] [--world 1] [--gel-recovery 0] [--gel-creep 0]
 //        pose_campaign (--trace SEED | --trace-scenario FILE.yaml) [--trace-out frames.csv]
@@ -24,7 +26,9 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <optional>
 #include <string>
+#include <utility>
 
 #include "campaign_score.hpp"
 #include "contact_events.hpp"
@@ -57,6 +61,7 @@ struct Args {
   bool oracle = false;          // --oracle: stick_oracle.hpp's registration replaces the estimate
   StickOracleOptions oracle_options;  // its labels, --oracle-slip-normals, --oracle-prior-rate-tau (noise per run)
   bool world = false;          // the world effects on (sim/random_scenario.hpp: randomScenario(seed, true))
+  std::optional<sim::WorldEffect> world_only;  // --world-only: that effect in every run, the others off
   bool recovery = true;        // input/gel_recovery.hpp on (off: the contact lasts while the gel recovers)
   bool creep = true;           // input/gel_creep.hpp on (off: a held press's creep is read as depth)
 };
@@ -65,6 +70,7 @@ constexpr const char* kUsage =
     "usage: pose_campaign --out runs.csv [--runs N] [--image-runs M] [--image-max-frames F] [--first-seed S]\n"
     "                     [--parity odd|even|all]  (odd seeds to tune on, even seeds to accept on)\n"
     "                     [--world 1]  (the world effects on: creep, camera shift, damage, flicker, drift)\n"
+    "                     [--world-only creep|shift|damage|light|drift]  (that effect in every run, no other)\n"
     "                     [--gel-recovery 0]  (without input/gel_recovery.hpp, to compare)\n"
     "                     [--gel-creep 0]  (without input/gel_creep.hpp, to compare)\n"
     "                     [--sd-relative F] [--sd-turn DEG_PER_SQRT_S] [--sd-slide MM_PER_SQRT_S]\n"
@@ -136,6 +142,17 @@ Args parse(int argc, char** argv) {
     else if (k == "--trace-noise-mm") a.trace_noise_mm = std::stod(v);
     else if (k == "--trace-images") a.trace_images = v == "1";
     else if (k == "--world") a.world = v == "1";
+    else if (k == "--world-only") {
+      const std::pair<const char*, sim::WorldEffect> names[] = {{"creep", sim::WorldEffect::creep},
+                                                               {"shift", sim::WorldEffect::camera_shift},
+                                                               {"damage", sim::WorldEffect::damage},
+                                                               {"light", sim::WorldEffect::light},
+                                                               {"drift", sim::WorldEffect::drift}};
+      for (const auto& [name, effect] : names)
+        if (v == name) a.world_only = effect;
+      if (!a.world_only) usageError("--world-only must be creep, shift, damage, light or drift");
+      a.world = true;
+    }
     else if (k == "--gel-recovery") a.recovery = v != "0";
     else if (k == "--gel-creep") a.creep = v != "0";
     else usageError("unknown option " + k);
@@ -175,12 +192,26 @@ std::vector<std::string> header() {
   // Against the stricter observable truth that also holds the turn a thin stick set does not fix.
   h.push_back("fixed_longest_excess");
   h.push_back("fixed_judged_diverged");
+  // 1 when the camera or a mirror moved between two frames that both touch (the view-shift test decides only
+  // out of contact, vision/view_shift.hpp).
+  h.push_back("shift_while_touching");
   return h;
+}
+
+// Whether the camera shift s(t) (sim/camera_shift.hpp) changes over some frame interval (t_{k-1}, t_k] whose
+// two frames the truth has in contact.
+bool shiftWhileTouching(const sim::CameraShiftOptions& shift, const std::vector<ReplayFrame>& frames) {
+  if (shift.shift_px.norm() == 0) return false;
+  const double end = shift.at_s + shift.ramp_s;
+  for (size_t k = 1; k < frames.size(); ++k)
+    if (frames[k - 1].gt_contact && frames[k].gt_contact && frames[k].t >= shift.at_s && frames[k - 1].t < end)
+      return true;
+  return false;
 }
 
 std::vector<std::string> row(const char* level, const sim::RandomConditions& c, const sim::WorldEffects& world,
                              double noise_mm, const RunScore& s, const ContactEvents& events, double ms,
-                             double marker_rmse, const input::CreepModel& creep) {
+                             double marker_rmse, const input::CreepModel& creep, bool shift_while_touching) {
   std::vector<std::string> r = {level, std::to_string(c.seed), std::string(sim::toString(c.model)), num(c.friction),
                                 num(c.kinetic_ratio), num(c.thickness_mm), num(c.foundation_length_mm),
                                 num(c.marker_depth_mm), std::to_string(c.markers), c.indenter, num(c.noise_grey),
@@ -231,6 +262,7 @@ std::vector<std::string> row(const char* level, const sim::RandomConditions& c, 
   r.push_back(num(creep.gain));
   r.push_back(std::to_string(s.fixed_longest_excess));
   r.push_back(s.fixed_judged_diverged ? "1" : "0");
+  r.push_back(shift_while_touching ? "1" : "0");
   return r;
 }
 
@@ -306,7 +338,7 @@ int main(int argc, char** argv) {
   const Args args = parse(argc, argv);
   if (args.trace >= 0 || !args.trace_scenario.empty()) {
     sim::RandomScenario rs;
-    if (args.trace >= 0) rs = sim::randomScenario(static_cast<unsigned>(args.trace), args.world);
+    if (args.trace >= 0) rs = sim::randomScenario(static_cast<unsigned>(args.trace), args.world, args.world_only);
     else rs.scenario = sim::loadScenario(args.trace_scenario);
     ReplayOptions o;
     o.noise_mm = kFieldNoisePerGreyMm * rs.conditions.noise_grey;
@@ -337,7 +369,7 @@ int main(int argc, char** argv) {
   for (int i = 0; i < args.runs; ++i) {
     const unsigned seed = args.first_seed + static_cast<unsigned>(i);
     if ((args.parity == "odd" && seed % 2 == 0) || (args.parity == "even" && seed % 2 == 1)) continue;
-    const sim::RandomScenario rs = sim::randomScenario(seed, args.world);
+    const sim::RandomScenario rs = sim::randomScenario(seed, args.world, args.world_only);
     ReplayOptions o;
     o.noise_mm = kFieldNoisePerGreyMm * rs.conditions.noise_grey;
     o.seed = seed;
@@ -352,14 +384,16 @@ int main(int argc, char** argv) {
     if (args.oracle) applyStickOracle(rec, field, oracleOptions(args, o.noise_mm));
     const RunScore s = scoreRun(field, o.noise_mm);
     diverged += s.judged_diverged ? 1 : 0;
-    out.row(row("field", rs.conditions, rs.scenario.world, o.noise_mm, s, contactEvents(field), ms, 0, creep));
+    out.row(row("field", rs.conditions, rs.scenario.world, o.noise_mm, s, contactEvents(field), ms, 0, creep,
+                shiftWhileTouching(rs.scenario.world.camera_shift, field)));
     if (image_done < args.image_runs && rs.scenario.defaultFrameCount() <= args.image_max_frames) {
       const RenderedReplay rr = replayRendered(rs.scenario);
       const double marker_rmse = std::sqrt((rr.marker_rmse_mm[0] * rr.marker_rmse_mm[0] +
                                             rr.marker_rmse_mm[1] * rr.marker_rmse_mm[1] +
                                             rr.marker_rmse_mm[2] * rr.marker_rmse_mm[2]) / 3.0);
       out.row(row("image", rs.conditions, rs.scenario.world, marker_rmse, scoreRun(rr.frames, marker_rmse),
-                  contactEvents(rr.frames), 0, marker_rmse, input::CreepModel{}));
+                  contactEvents(rr.frames), 0, marker_rmse, input::CreepModel{},
+                  shiftWhileTouching(rs.scenario.world.camera_shift, rr.frames)));
       ++image_done;
     }
     std::fprintf(stderr, "\rrun %d/%d, diverged (observable and full) %d, image runs %d", i + 1, args.runs, diverged, image_done);

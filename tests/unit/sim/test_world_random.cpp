@@ -83,3 +83,39 @@ TEST(RandomWorld, RunsWithEffectsPlayAndTouch) {
     EXPECT_GT(contact, 0) << "seed " << seed << " never touched";
   }
 }
+
+// One effect alone (the campaign's --world-only): on in every run, the others off, and the same size as the
+// full draw's where the full draw turns it on and the effects drawn before it off.
+TEST(RandomWorld, OneEffectAloneIsOnInEveryRunWithTheFullDrawsSize) {
+  int same_as_full = 0;
+  for (unsigned seed = 1; seed <= 60; ++seed) {
+    const WorldEffects full = randomScenario(seed, true).scenario.world;
+    const WorldEffects creep = randomScenario(seed, true, WorldEffect::creep).scenario.world;
+    EXPECT_TRUE(creep.viscoelastic.enabled()) << "seed " << seed;
+    EXPECT_FALSE(creep.camera_shift.enabled() || creep.damage.enabled() || creep.light.enabled() ||
+                 creep.drift.enabled())
+        << "seed " << seed;
+    if (full.viscoelastic.enabled()) {  // the first effect drawn: always the full draw's own
+      EXPECT_EQ(creep.viscoelastic.relaxation, full.viscoelastic.relaxation);
+      EXPECT_EQ(creep.viscoelastic.time_s, full.viscoelastic.time_s);
+    }
+    const WorldEffects shift = randomScenario(seed, true, WorldEffect::camera_shift).scenario.world;
+    EXPECT_TRUE(shift.camera_shift.enabled()) << "seed " << seed;
+    EXPECT_FALSE(shift.viscoelastic.enabled() || shift.damage.enabled() || shift.light.enabled() ||
+                 shift.drift.enabled())
+        << "seed " << seed;
+    if (full.camera_shift.enabled() && !full.viscoelastic.enabled()) {  // the stream consumed alike before it
+      ++same_as_full;
+      EXPECT_EQ(shift.camera_shift.shift_px, full.camera_shift.shift_px);
+      EXPECT_EQ(shift.camera_shift.at_s, full.camera_shift.at_s);
+    }
+    for (WorldEffect e : {WorldEffect::damage, WorldEffect::light, WorldEffect::drift}) {
+      const WorldEffects w = randomScenario(seed, true, e).scenario.world;
+      EXPECT_EQ(w.damage.enabled(), e == WorldEffect::damage);
+      EXPECT_EQ(w.light.enabled(), e == WorldEffect::light);
+      EXPECT_EQ(w.drift.enabled(), e == WorldEffect::drift);
+      EXPECT_FALSE(w.viscoelastic.enabled() || w.camera_shift.enabled());
+    }
+  }
+  EXPECT_GT(same_as_full, 5);
+}
