@@ -39,7 +39,6 @@ class OnsetBand {
   // This frame's largest deformation modulus (mm) over `markers` measured markers, the measured noise per axis
   // (mm) and the contact threshold (mm). Call once per analysed frame. True when a contact may begin now.
   bool mayBegin(double max_modulus_mm, int markers, double noise_mm, double contact_threshold_mm);
-  bool armed() const { return armed_; }  // the field sank through the threshold and is still within the band
   // The bar's half-width b = sigma noiseMaximum(N, p) (mm).
   double halfWidth(int markers, double noise_mm) const;
   void reset();
