@@ -28,12 +28,19 @@ import tempfile
 import time
 
 SKIP = 77
-KEY_HOLD_S = 1.5        # W: 1.5 mm/s  -> about 2.2 mm deeper (from 0.5 mm above the pad)
-DRAG_STEPS, DRAG_PX = 20, 5   # 100 px at 0.02 mm/px -> 2 mm along S.x
+KEY_HOLD_S = 2.5        # W: 1.5 mm/s  -> about 3.7 mm deeper (from 0.5 mm above the pad), 3.5 mm at most
+DRAG_STEPS, DRAG_PX, DRAG_STEP_S = 20, 5, 0.12   # 100 px at 0.02 mm/px -> 2 mm along S.x, in 2.4 s
 TWIST_HOLD_S = 1.0      # E: 20 deg/s -> the 20 deg limit
 # One frame moves the finger at most 0.25 mm / 2 deg (VirtualFingerOptions), so
 # a slow run (sanitizers, a loaded machine) moves it less than the rates say;
 # the lower bounds below still hold at 3 frames/s.
+# The press is firm (at 3 frames/s 1.4 mm deep; the finger's 3.5 mm limit on a
+# fast machine) because a shallow contact slid fast slips as a whole at the
+# slide's end and the estimate then stops short: at 1 mm deep a drawn frame
+# moving 0.14-0.25 mm leaves 0.3-0.5 mm of the slide unread (an open limit of
+# the estimator, docs/pose "Known limits", tests/data/scenarios/
+# fast_shallow_slide.yaml). This test checks the window and its input path,
+# not that limit; at 1.2 mm and deeper the same slides read within 0.01 mm.
 MIN_DEPTH_MM, MIN_SLIDE_MM, MIN_TWIST_DEG = 0.3, 0.5, 3.0
 # The finger rests this long after the slide before it twists. A fast slide
 # puts the pose estimator in gross slip, and it comes back only after its
@@ -100,7 +107,7 @@ def drive_finger(env):
     xdotool(env, "mousedown", "1")
     for _ in range(DRAG_STEPS):
         xdotool(env, "mousemove_relative", "--", str(DRAG_PX), "0")
-        time.sleep(0.06)
+        time.sleep(DRAG_STEP_S)
     xdotool(env, "mouseup", "1")
     time.sleep(REST_BEFORE_TWIST_S)
     xdotool(env, "keydown", "e")
