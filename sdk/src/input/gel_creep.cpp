@@ -46,6 +46,34 @@ std::pair<double, double> spread(const std::vector<std::vector<Eigen::Vector3d>>
   return {sum, worst};
 }
 
+// The minimum of a unimodal cost over (lo, hi) by golden section, to within 1e-6.
+template <class Cost>
+double goldenSection(const Cost& cost, double lo, double hi) {
+  const double g = (std::sqrt(5.0) - 1) / 2;
+  double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo);
+  double f1 = cost(x1), f2 = cost(x2);
+  while (hi - lo > 1e-6) {
+    if (f1 < f2) {
+      hi = x2, x2 = x1, f2 = f1, x1 = hi - g * (hi - lo), f1 = cost(x1);
+    } else {
+      lo = x1, x1 = x2, f1 = f2, x2 = lo + g * (hi - lo), f2 = cost(x2);
+    }
+  }
+  return (lo + hi) / 2;
+}
+
+// Whether a field (u = p - rest, S, mm) holds a deformation and not only noise: its largest valid marker beyond
+// `sigmas` times the noise of a difference of two measurements (the marker's and its rest's), sigma sqrt 2. A
+// field of noise alone is not; and, since every frame shares the rest's noise, it reads as a copy of the last
+// frame scaled by about one half.
+bool holdsADeformation(const std::vector<Eigen::Vector3d>& u, const std::vector<std::uint8_t>& valid,
+                       double noise_mm, double sigmas) {
+  double largest = 0;
+  for (size_t i = 0; i < u.size() && i < valid.size(); ++i)
+    if (valid[i]) largest = std::max(largest, u[i].norm());
+  return largest > sigmas * noise_mm * std::sqrt(2.0);
+}
+
 }  // namespace
 
 void GelCreepOptions::validate() const {
@@ -53,6 +81,7 @@ void GelCreepOptions::validate() const {
   requireInRange("gel creep: false_alarm", false_alarm, 1e-9, 0.1);
   requireInRange("gel creep: stop_factor", stop_factor, 1, 100);
   requireInRange("gel creep: history_frames", history_frames, 16, 100000);
+  requireInRange("gel creep: max_relaxation", max_relaxation, 0.05, 0.95);
 }
 
 CreepWindow creepWindow(const std::vector<std::vector<Eigen::Vector3d>>& u, size_t first, size_t m,
@@ -119,9 +148,15 @@ void GelCreep::reset() {
   model_ = CreepModel{};
   delayed_.clear();
   have_t_ = false;
+  clearHistory();
+}
+
+void GelCreep::clearHistory() {
   history_.clear();
   history_valid_.clear();
   history_t_.clear();
+  history_had_remainder_ = false;
+  recovery_start_ = kNoRecovery;
 }
 
 const std::vector<Eigen::Vector3d>& GelCreep::advance(const MarkerField& now, const MarkerField& rest, double t) {
@@ -142,27 +177,118 @@ const std::vector<Eigen::Vector3d>& GelCreep::advance(const MarkerField& now, co
 bool GelCreep::observe(const MarkerField& now, const MarkerField& rest, double t, bool in_contact,
                        double noise_mm, const std::vector<Eigen::Vector3d>& remainder) {
   if (!options_.enabled || model_.measured()) return false;
-  if (!in_contact || now.position.size() != rest.position.size()) {
-    history_.clear();
-    history_t_.clear();
-    history_valid_.clear();
+  if (now.position.size() != rest.position.size()) {
+    clearHistory();
     return false;
   }
-  if (history_.size() >= static_cast<size_t>(options_.history_frames)) return false;
   std::vector<Eigen::Vector3d> u(now.position.size());
-  if (history_valid_.size() != u.size()) history_valid_.assign(u.size(), 1);
+  std::vector<std::uint8_t> valid(u.size());
   for (size_t i = 0; i < u.size(); ++i) {
     u[i] = now.position[i] - rest.position[i];
-    history_valid_[i] = history_valid_[i] && now.valid[i] && rest.valid[i];
+    valid[i] = now.valid[i] && rest.valid[i];
   }
+  if (!in_contact) return observeRecovery(std::move(u), valid, t, noise_mm);
+  const double last_recorded_t = history_t_.empty() ? t : history_t_.back();
+  if (recovery_start_ != kNoRecovery && finishRecovery(noise_mm)) {
+    // A touch ended the recovery that measured the gel: this frame's field loads it from v as it now is.
+    model_.step(delayed_, u, valid, t - last_recorded_t);
+    return true;
+  }
+  if (recovery_start_ != kNoRecovery) clearHistory();  // the record after a recovery that measured nothing
+  if (history_.size() >= static_cast<size_t>(options_.history_frames)) return false;
+  if (history_valid_.size() != u.size()) history_valid_.assign(u.size(), 1);
+  for (size_t i = 0; i < u.size(); ++i) history_valid_[i] = history_valid_[i] && valid[i];
+  history_had_remainder_ = history_had_remainder_ || !remainder.empty();
   history_.push_back(std::move(u));
   history_t_.push_back(t);
   if (!identify(noise_mm)) return false;
   if (remainder.size() == delayed_.size())
     for (size_t i = 0; i < delayed_.size(); ++i) delayed_[i] += remainder[i];
-  history_.clear();
-  history_t_.clear();
-  history_valid_.clear();
+  clearHistory();
+  return true;
+}
+
+bool GelCreep::observeRecovery(std::vector<Eigen::Vector3d> u, const std::vector<std::uint8_t>& valid, double t,
+                               double noise_mm) {
+  if (history_.empty() || history_had_remainder_) {
+    clearHistory();
+    return false;
+  }
+  const bool deformed = holdsADeformation(u, valid, noise_mm, options_.fit_sigmas);
+  if (recovery_start_ == kNoRecovery) {
+    if (!deformed) {  // the contact left nothing behind: an elastic pad, or a gel that has already recovered
+      clearHistory();
+      return false;
+    }
+    recovery_start_ = history_.size();
+  } else {
+    const DecayPair pair = decayPair(history_.back(), history_valid_, u, valid, noise_mm);
+    const bool decaying = deformed && pair.measured && pair.alpha > 0 &&
+                          pair.alpha < 1 - options_.fit_sigmas * pair.alpha_sd &&
+                          pair.worst_sigmas <= noiseMaximum(pair.markers, options_.false_alarm);
+    if (!decaying || history_.size() >= static_cast<size_t>(options_.history_frames)) {
+      const double last_recorded_t = history_t_.back();
+      const bool measured = finishRecovery(noise_mm);
+      if (measured) model_.step(delayed_, u, valid, t - last_recorded_t);
+      return measured;
+    }
+  }
+  for (size_t i = 0; i < u.size() && i < history_valid_.size(); ++i) history_valid_[i] = history_valid_[i] && valid[i];
+  history_.push_back(std::move(u));
+  history_t_.push_back(t);
+  return false;
+}
+
+bool GelCreep::finishRecovery(double noise_mm) {
+  const size_t start = recovery_start_;
+  const bool measured = start != kNoRecovery && history_.size() >= start + 3 && identifyFromRecovery(start, noise_mm);
+  clearHistory();
+  return measured;
+}
+
+bool GelCreep::identifyFromRecovery(size_t start, double noise_mm) {
+  const size_t n = history_.size() - 1;
+  // The gel's rate: each recovery frame a scaled copy of the one before (pooled least squares).
+  double uu = 0, uv = 0;
+  int markers = 0;
+  for (size_t i = 0; i < history_valid_.size(); ++i) {
+    if (!history_valid_[i]) continue;
+    ++markers;
+    for (size_t j = start + 1; j <= n; ++j) {
+      uu += history_[j - 1][i].squaredNorm();
+      uv += history_[j - 1][i].dot(history_[j][i]);
+    }
+  }
+  if (markers < 3 || !(uu > 0)) return false;
+  const double a = uv / uu;
+  if (!(a > 0 && a < 1)) return false;
+  CreepModel model;
+  model.tau_c_s = (history_t_[n] - history_t_[start]) / static_cast<double>(n - start) / -std::log(a);
+  // The gain that leaves no elastic field in the recovery: the sum of squares and the largest marker of the
+  // inverted fields of its frames, about zero.
+  std::vector<Eigen::Vector3d> v;
+  const auto residual = [&](double r) {
+    model.gain = r / (1 - r);
+    double sum = 0, worst = 0;
+    for (const auto& e : elasticFields(history_, history_t_, history_valid_, model, start, n, v))
+      for (size_t i = 0; i < e.size(); ++i)
+        if (history_valid_[i]) {
+          sum += e[i].squaredNorm();
+          worst = std::max(worst, e[i].norm());
+        }
+    return std::pair<double, double>{sum, worst};
+  };
+  const double r_max = options_.max_relaxation;
+  const double r = goldenSection([&](double x) { return residual(x).first; }, 0, r_max);
+  const double worst = residual(r).second;  // leaves model.gain and v at r
+  // Each inverted marker is the frame's measurement less v, which carries the noise of the frames it was
+  // estimated from: sd sigma sqrt(1 + a^2), as a decaying pair's residual (decayPair).
+  const double residual_sd = noise_mm * std::sqrt(1 + a * a);
+  const bool inside = r > 1e-3 * r_max && r < r_max * (1 - 1e-3);
+  if (!inside || worst > residual_sd * noiseMaximum(markers * static_cast<int>(n - start + 1), options_.false_alarm))
+    return false;
+  model_ = model;
+  delayed_ = std::move(v);
   return true;
 }
 
@@ -195,18 +321,7 @@ bool GelCreep::identify(double noise_mm) {
           spread(elasticFields(history_, history_t_, history_valid_, model, h, n, v), history_valid_);
       return std::pair<double, double>{sum * scale * scale, worst * scale};
     };
-    const double g = (std::sqrt(5.0) - 1) / 2;
-    double lo = 0, hi = 1 - 1e-9;
-    double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo);
-    double f1 = cost(x1).first, f2 = cost(x2).first;
-    while (hi - lo > 1e-6) {
-      if (f1 < f2) {
-        hi = x2, x2 = x1, f2 = f1, x1 = hi - g * (hi - lo), f1 = cost(x1).first;
-      } else {
-        lo = x1, x1 = x2, f1 = f2, x2 = lo + g * (hi - lo), f2 = cost(x2).first;
-      }
-    }
-    const double worst = cost((lo + hi) / 2).second;
+    const double worst = cost(goldenSection([&](double r) { return cost(r).first; }, 0, 1 - 1e-9)).second;
     if (worst > noise_mm * noiseMaximum(w.markers * static_cast<int>(n - h + 1), options_.false_alarm)) continue;
     model_ = model;
     delayed_ = std::move(v);

@@ -60,13 +60,32 @@
 // gel keeps it); the contact analysis and the pose see u_e, the finger's own
 // field, and a recovery after lift-off is v decaying (gel_recovery.hpp then
 // finds nothing left to release).
+// A recovery measures the gel too. Once the tracker has ended a contact, the
+// field left behind is the delayed part alone, u_k = a u_{k-1} (creep_model.hpp
+// with u_e = 0): the recorded contact goes on being recorded while each new
+// frame is a scaled copy of the last (decayPair of gel_recovery.hpp: shrinking
+// beyond fit_sigmas of its sd, every residual within the noise maximum) and
+// holds a deformation (its largest marker beyond fit_sigmas of the noise of a
+// marker against its rest, sigma sqrt 2: a field of noise alone also reads as
+// a scaled copy, of about one half, as every frame shares the rest's noise).
+// When the decay ends (a touch, or the field within the noise) and it lasted at
+// least two frame pairs, a is the pooled least-squares scale of its pairs and
+// tau_c = mean dt / -ln a; the gain is then the one whose causal inversion of
+// the whole record, from v = 0 where the contact began, leaves no elastic
+// field in the recovery's frames (golden section over r = c / (1 + c) in
+// (0, max_relaxation): a gain without bound explains any recovery by a gel
+// that follows every field at once, which a silicone that keeps at least
+// 1 - max_relaxation of its modulus does not). The model is taken when the
+// recovery's largest inverted marker is within the noise bound of all its
+// frames and the gain is inside its range. A contact that began on a
+// recovering gel (a remainder taken away) is not used: its record does not
+// start from v = 0.
 // All bounds are multiples of the measured noise or noise probabilities; the
-// gel's constants are what the markers show. Before the first held press has
-// shown its stop and a few frames of its time course nothing is taken away:
-// the creep of that press up to then is read as depth, and on a gel that is
-// never held still it never is. The recorded frames are bounded by
-// history_frames (memory, not a physical scale): a contact longer than that
-// before its hold is not measured.
+// gel's constants are what the markers show. Before a held press or a
+// recovery has measured them nothing is taken away: the creep of the contacts
+// up to then is read as depth, and their lift-offs are found by
+// gel_recovery.hpp alone. The recorded frames are bounded by history_frames
+// (memory, not a physical scale): a contact longer than that is not measured.
 #pragma once
 
 #include <cstdint>
@@ -82,7 +101,9 @@ struct GelCreepOptions {
   double fit_sigmas = 8;       // [3, 100] noise sigmas: a scale within (0, 1) that noise does not make
   double false_alarm = 1e-3;   // [1e-9, 0.1] per window: chance that noise alone breaks a held window's fit
   double stop_factor = 3;      // [1, 100] x fit_sigmas: how far off the hold's exponential the frame before it is
-  int history_frames = 1024;   // [16, 100000] frames of one contact kept for the gain's fit
+  int history_frames = 1024;   // [16, 100000] frames of one contact (and its recovery) kept for the gain's fit
+  double max_relaxation = 0.6;  // [0.05, 0.95] the largest relaxed fraction r of the modulus a recovery's fit
+                                // considers (soft silicones relax 10-40 %)
   void validate() const;       // throws InputError naming the bad field
 };
 
@@ -114,8 +135,9 @@ class GelCreep {
   const std::vector<Eigen::Vector3d>& advance(const MarkerField& now, const MarkerField& rest, double t);
   // After the frame's analysis, while not yet measured: `now` as the analysis saw it (a recovery's remainder
   // taken away), in_contact the tracker's decision, noise_mm the measured marker noise, remainder the
-  // recovery's remainder (S, mm; empty when none). True when this frame measured the gel: v then holds the
-  // new press's creep and the remainder, and the recovery's remainder is to be dropped.
+  // recovery's remainder (S, mm; empty when none). True when this frame measured the gel (a held press or a
+  // recovery): v then holds the gel's delayed part as of this frame, and the recovery's remainder is to be
+  // dropped.
   bool observe(const MarkerField& now, const MarkerField& rest, double t, bool in_contact, double noise_mm,
                const std::vector<Eigen::Vector3d>& remainder);
   const CreepModel& model() const { return model_; }
@@ -124,6 +146,14 @@ class GelCreep {
 
  private:
   bool identify(double noise_mm);
+  // Frames recorded after the contact ended, while they decay (the recovery above); true when measured.
+  bool observeRecovery(std::vector<Eigen::Vector3d> u, const std::vector<std::uint8_t>& valid, double t,
+                       double noise_mm);
+  // The recovery recorded from history_[recovery_start_] to the last frame: measures the gel from it when it is
+  // long enough, then clears the record. True when measured.
+  bool finishRecovery(double noise_mm);
+  bool identifyFromRecovery(size_t start, double noise_mm);
+  void clearHistory();
 
   GelCreepOptions options_;
   CreepModel model_;
@@ -133,6 +163,9 @@ class GelCreep {
   std::vector<std::vector<Eigen::Vector3d>> history_;  // u since the contact began (before measured)
   std::vector<std::uint8_t> history_valid_;           // markers valid in every recorded frame
   std::vector<double> history_t_;
+  bool history_had_remainder_ = false;  // the recorded contact began on a recovering gel
+  static constexpr size_t kNoRecovery = static_cast<size_t>(-1);
+  size_t recovery_start_ = kNoRecovery;  // the first frame of the record after the contact ended
 };
 
 }  // namespace onetip::input

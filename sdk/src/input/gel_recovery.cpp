@@ -15,15 +15,18 @@ void GelRecoveryOptions::validate() const {
 }
 
 DecayPair decayPair(const std::vector<Eigen::Vector3d>& before, const std::vector<std::uint8_t>& before_valid,
-                    const contact::ContactField& now, double noise_mm) {
+                    const std::vector<Eigen::Vector3d>& now, const std::vector<std::uint8_t>& now_valid,
+                    double noise_mm) {
   DecayPair out;
-  if (before.size() != now.displacement.size() || !(noise_mm > 0)) return out;
+  if (before.size() != now.size() || before_valid.size() != before.size() || now_valid.size() != now.size() ||
+      !(noise_mm > 0))
+    return out;
   double uu = 0, uv = 0;
   int n = 0;
   for (size_t i = 0; i < before.size(); ++i) {
-    if (!before_valid[i] || !now.valid[i]) continue;
+    if (!before_valid[i] || !now_valid[i]) continue;
     uu += before[i].squaredNorm();
-    uv += before[i].dot(now.displacement[i]);
+    uv += before[i].dot(now[i]);
     ++n;
   }
   if (n < 3 || !(uu > 0)) return out;
@@ -33,10 +36,9 @@ DecayPair decayPair(const std::vector<Eigen::Vector3d>& before, const std::vecto
   const double s = noise_mm * std::sqrt(1 + out.alpha * out.alpha);
   out.alpha_sd = s / std::sqrt(uu);
   for (size_t i = 0; i < before.size(); ++i) {
-    if (!before_valid[i] || !now.valid[i]) continue;
-    out.worst_sigmas = std::max(out.worst_sigmas, (now.displacement[i] - out.alpha * before[i]).norm() / s);
-    out.worst_growth_sigmas =
-        std::max(out.worst_growth_sigmas, (now.displacement[i].norm() - out.alpha * before[i].norm()) / s);
+    if (!before_valid[i] || !now_valid[i]) continue;
+    out.worst_sigmas = std::max(out.worst_sigmas, (now[i] - out.alpha * before[i]).norm() / s);
+    out.worst_growth_sigmas = std::max(out.worst_growth_sigmas, (now[i].norm() - out.alpha * before[i].norm()) / s);
   }
   return out;
 }
@@ -82,7 +84,7 @@ void GelRecovery::reset() {
 bool GelRecovery::recovering(const contact::ContactField& field, bool was_in_contact, double noise_mm) {
   if (!options_.enabled) return false;
   const double k = options_.fit_sigmas;
-  const DecayPair pair = decayPair(previous_, previous_valid_, field, noise_mm);
+  const DecayPair pair = decayPair(previous_, previous_valid_, field.displacement, field.valid, noise_mm);
   const bool shrinking = pair.measured && pair.alpha < 1 - k * pair.alpha_sd;
   remainder_began_ = false;
   if (!field.in_contact) {

@@ -83,8 +83,11 @@ struct DecayPair {
 // with probability false_alarm (N P(|r| > b) = false_alarm).
 double noiseMaximum(int markers, double false_alarm);
 
+// The pair (before, now) of displacement fields (S, mm per marker, against the rest) over the markers valid in
+// both.
 DecayPair decayPair(const std::vector<Eigen::Vector3d>& before, const std::vector<std::uint8_t>& before_valid,
-                    const contact::ContactField& now, double noise_mm);
+                    const std::vector<Eigen::Vector3d>& now, const std::vector<std::uint8_t>& now_valid,
+                    double noise_mm);
 
 class GelRecovery {
  public:

@@ -1,6 +1,7 @@
 // Per-frame cost of contact analysis and the pose solve on recorded simulator
 // frames (slide_x at the default noise, 17 x 17 markers), per solver policy
-// and per accumulation, and the surface normals: grid neighbours vs PCL's
+// and per accumulation; the one frame in which a recovery measures a creeping
+// gel (input/gel_creep.hpp); and the surface normals: grid neighbours vs PCL's
 // NormalEstimation (k nearest neighbours), with their angular error against
 // the exact normal of a smooth spherical dimple as a counter.
 #include <benchmark/benchmark.h>
@@ -10,9 +11,11 @@
 
 #include <cmath>
 #include <random>
+#include <string>
 
 #include "contact/contact_analyzer.hpp"
 #include "contact/surface_normals.hpp"
+#include "input/gel_creep.hpp"
 #include "pose/adaptive_pose_estimator.hpp"
 #include "sim_replay.hpp"
 
@@ -81,6 +84,36 @@ void BM_Tracker(benchmark::State& state) {
   state.SetLabel(o.accumulation == input::Accumulation::composed ? "composed" : "euler_sum");
 }
 BENCHMARK(BM_Tracker)->DenseRange(0, 1);
+
+// The frame that ends the recovery after creep_unheld's first lift-off (the second press's first frame): the
+// gel's constants are fitted to every frame recorded since the first contact began (the golden section inverts
+// them all per trial gain). The contact flags are the truth's; the frames before it are fed outside the timing.
+void BM_GelFromRecovery(benchmark::State& state) {
+  static const poseval::Recording rec = poseval::record(
+      sim::loadScenario(std::string(ONETIP_SOURCE_DIR) + "/tests/data/scenarios/world/creep_unheld.yaml"));
+  constexpr double kNoiseMm = 0.0006;  // sim_replay.hpp's marker noise per axis
+  input::GelCreep primed;
+  size_t k = 0;
+  for (; k < rec.frames.size(); ++k) {
+    input::GelCreep trial = primed;
+    if (trial.observe(rec.frames[k], rec.rest, rec.truth[k].t, rec.truth[k].in_contact, kNoiseMm, {})) break;
+    primed = trial;
+  }
+  if (k == rec.frames.size()) {
+    state.SkipWithError("creep_unheld's recovery measured no gel");
+    return;
+  }
+  for (auto _ : state) {
+    state.PauseTiming();
+    input::GelCreep gel = primed;
+    state.ResumeTiming();
+    benchmark::DoNotOptimize(gel.observe(rec.frames[k], rec.rest, rec.truth[k].t, rec.truth[k].in_contact,
+                                         kNoiseMm, {}));
+  }
+  state.counters["recorded_frames"] = static_cast<double>(k);
+  state.counters["markers"] = static_cast<double>(rec.rest.position.size());
+}
+BENCHMARK(BM_GelFromRecovery)->Unit(benchmark::kMillisecond);
 
 // A 17 x 17 marker layer shaped as a sphere of radius 20 mm (1 mm deep at the
 // centre), with a pessimistic noise of 0.012 mm per axis (20x the front end's).
