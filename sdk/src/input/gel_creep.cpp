@@ -82,6 +82,7 @@ void GelCreepOptions::validate() const {
   requireInRange("gel creep: stop_factor", stop_factor, 1, 100);
   requireInRange("gel creep: history_frames", history_frames, 16, 100000);
   requireInRange("gel creep: max_relaxation", max_relaxation, 0.05, 0.95);
+  requireInRange("gel creep: model_error", model_error, 0, 0.5);
 }
 
 CreepWindow creepWindow(const std::vector<std::vector<Eigen::Vector3d>>& u, size_t first, size_t m,
@@ -175,7 +176,7 @@ const std::vector<Eigen::Vector3d>& GelCreep::advance(const MarkerField& now, co
 }
 
 bool GelCreep::observe(const MarkerField& now, const MarkerField& rest, double t, bool in_contact,
-                       double noise_mm, const std::vector<Eigen::Vector3d>& remainder) {
+                       double noise_mm, const std::vector<Eigen::Vector3d>& remainder, int decaying_frames) {
   if (!options_.enabled || model_.measured()) return false;
   if (now.position.size() != rest.position.size()) {
     clearHistory();
@@ -201,7 +202,12 @@ bool GelCreep::observe(const MarkerField& now, const MarkerField& rest, double t
   history_had_remainder_ = history_had_remainder_ || !remainder.empty();
   history_.push_back(std::move(u));
   history_t_.push_back(t);
-  if (!identify(noise_mm)) return false;
+  // The frames since the finger's field left, decaying as a gel does (gel_recovery.hpp), are a recovery seen
+  // while the contact still holds: tried at 1, 2, 4, ... frames, so that a long decay costs log2 of its
+  // frames in fits, not one per frame.
+  const auto d = static_cast<size_t>(std::max(decaying_frames, 0));
+  const bool decaying = d > 0 && (d & (d - 1)) == 0 && d < history_.size() && !history_had_remainder_;
+  if (!identify(noise_mm) && !(decaying && identifyFromRecovery(history_.size() - 1 - d, noise_mm))) return false;
   if (remainder.size() == delayed_.size())
     for (size_t i = 0; i < delayed_.size(); ++i) delayed_[i] += remainder[i];
   clearHistory();
@@ -264,28 +270,32 @@ bool GelCreep::identifyFromRecovery(size_t start, double noise_mm) {
   if (!(a > 0 && a < 1)) return false;
   CreepModel model;
   model.tau_c_s = (history_t_[n] - history_t_[start]) / static_cast<double>(n - start) / -std::log(a);
-  // The gain that leaves no elastic field in the recovery: the sum of squares and the largest marker of the
-  // inverted fields of its frames, about zero.
+  // The gain that leaves no elastic field in the recovery: the sum of squares of the inverted fields of its
+  // frames about zero, and their largest marker in units of its sd. Each inverted marker is the frame's
+  // measurement less v, which carries the noise of the frames it was estimated from: sd sigma sqrt(1 + a^2), as
+  // a decaying pair's residual (decayPair); and what one time constant misses of the gel, model_error of the
+  // marker's displacement u.
+  const double noise_sd = noise_mm * std::sqrt(1 + a * a);
   std::vector<Eigen::Vector3d> v;
   const auto residual = [&](double r) {
     model.gain = r / (1 - r);
     double sum = 0, worst = 0;
-    for (const auto& e : elasticFields(history_, history_t_, history_valid_, model, start, n, v))
+    size_t j = start;
+    for (const auto& e : elasticFields(history_, history_t_, history_valid_, model, start, n, v)) {
       for (size_t i = 0; i < e.size(); ++i)
         if (history_valid_[i]) {
           sum += e[i].squaredNorm();
-          worst = std::max(worst, e[i].norm());
+          worst = std::max(worst, e[i].norm() / std::hypot(noise_sd, options_.model_error * history_[j][i].norm()));
         }
+      ++j;
+    }
     return std::pair<double, double>{sum, worst};
   };
   const double r_max = options_.max_relaxation;
   const double r = goldenSection([&](double x) { return residual(x).first; }, 0, r_max);
-  const double worst = residual(r).second;  // leaves model.gain and v at r
-  // Each inverted marker is the frame's measurement less v, which carries the noise of the frames it was
-  // estimated from: sd sigma sqrt(1 + a^2), as a decaying pair's residual (decayPair).
-  const double residual_sd = noise_mm * std::sqrt(1 + a * a);
+  const double worst_sigmas = residual(r).second;  // leaves model.gain and v at r
   const bool inside = r > 1e-3 * r_max && r < r_max * (1 - 1e-3);
-  if (!inside || worst > residual_sd * noiseMaximum(markers * static_cast<int>(n - start + 1), options_.false_alarm))
+  if (!inside || worst_sigmas > noiseMaximum(markers * static_cast<int>(n - start + 1), options_.false_alarm))
     return false;
   model_ = model;
   delayed_ = std::move(v);

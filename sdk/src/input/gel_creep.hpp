@@ -77,9 +77,24 @@
 // that follows every field at once, which a silicone that keeps at least
 // 1 - max_relaxation of its modulus does not). The model is taken when the
 // recovery's largest inverted marker is within the noise bound of all its
-// frames and the gain is inside its range. A contact that began on a
+// frames and the gain is inside its range; a marker's sd there is the noise's
+// and model_error of its displacement (one time constant for a gel that may
+// have more, markers measured through the images: rendered recoveries miss a
+// bound of the noise alone by 1.1-1.6 times with their constants within 5 %).
+// A contact that began on a
 // recovering gel (a remainder taken away) is not used: its record does not
 // start from v = 0.
+// The same measurement is made while the contact still holds, on the frames
+// since the finger's field left that gel_recovery.hpp finds decaying as a
+// gel does (GelRecovery::decayingFrames: each a shrinking copy of the first).
+// A slow gel at a high frame rate shrinks too little in one frame for the
+// release rule to end the contact (a finger that stayed would not yet show),
+// but the whole record explains those frames only if no finger is left in
+// them: a finger still holding a field stays in the inverted field. Tried
+// when those frames number 1, 2, 4, 8, ..., so a long decay costs log2 of its
+// frames in fits; the frame that measures the gel is analysed again without
+// v (input/pose_tracker.hpp), and its contact ends there when only the gel
+// held it.
 // All bounds are multiples of the measured noise or noise probabilities; the
 // gel's constants are what the markers show. Before a held press or a
 // recovery has measured them nothing is taken away: the creep of the contacts
@@ -104,6 +119,9 @@ struct GelCreepOptions {
   int history_frames = 1024;   // [16, 100000] frames of one contact (and its recovery) kept for the gain's fit
   double max_relaxation = 0.6;  // [0.05, 0.95] the largest relaxed fraction r of the modulus a recovery's fit
                                 // considers (soft silicones relax 10-40 %)
+  double model_error = 0.05;   // [0, 0.5] share of a marker's displacement a recovery's fit may leave unexplained
+                               // besides the noise (a gel with more than one time constant, markers measured
+                               // through the images)
   void validate() const;       // throws InputError naming the bad field
 };
 
@@ -138,8 +156,10 @@ class GelCreep {
   // recovery's remainder (S, mm; empty when none). True when this frame measured the gel (a held press or a
   // recovery): v then holds the gel's delayed part as of this frame, and the recovery's remainder is to be
   // dropped.
+  // decaying_frames: in contact, the frames since the finger's field left that decayed as a gel does
+  // (GelRecovery::decayingFrames); the gel is measured from them as from a recovery.
   bool observe(const MarkerField& now, const MarkerField& rest, double t, bool in_contact, double noise_mm,
-               const std::vector<Eigen::Vector3d>& remainder);
+               const std::vector<Eigen::Vector3d>& remainder, int decaying_frames = 0);
   const CreepModel& model() const { return model_; }
   const std::vector<Eigen::Vector3d>& delayed() const { return delayed_; }
   void reset();

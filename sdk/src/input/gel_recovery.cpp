@@ -77,16 +77,18 @@ void GelRecovery::reset() {
   remainder_began_ = false;
   previous_.clear();
   previous_valid_.clear();
-  reshaped_ = false;
+  window_.armed = false;
   recovering_ = false;
 }
 
-bool GelRecovery::recovering(const contact::ContactField& field, bool was_in_contact, double noise_mm) {
+bool GelRecovery::recovering(const contact::ContactField& field, bool was_in_contact, double noise_mm,
+                             double contact_threshold_mm) {
   if (!options_.enabled) return false;
   const double k = options_.fit_sigmas;
   const DecayPair pair = decayPair(previous_, previous_valid_, field.displacement, field.valid, noise_mm);
   const bool shrinking = pair.measured && pair.alpha < 1 - k * pair.alpha_sd;
   remainder_began_ = false;
+  decaying_frames_ = 0;
   if (!field.in_contact) {
     recovering_ = false;  // within the contact threshold (or no decision): the contact rule says it all
     remainder_.clear();
@@ -109,16 +111,39 @@ bool GelRecovery::recovering(const contact::ContactField& field, bool was_in_con
         if (previous_valid_[i]) remainder_[i] = remainder_alpha_ * previous_[i];
       remainder_began_ = true;
     }
-  } else if (was_in_contact && reshaped_) {
-    const bool exact = pair.measured && pair.worst_sigmas <= noiseMaximum(pair.markers, options_.release_false_alarm);
-    const bool slowed = pair.alpha - reshaped_alpha_ > k * std::hypot(pair.alpha_sd, reshaped_alpha_sd_);
-    recovering_ = exact && shrinking && slowed;
-    rate_sum_ = recovering_ ? pair.alpha : 0;
-    rate_count_ = recovering_ ? 1 : 0;
+  } else if (was_in_contact && window_.armed) {
+    // Since the last shrink that changed shape (frame j, n frames ago): every frame a scaled copy of u_j,
+    // alpha_n = <u_j, u_k> / <u_j, u_j>, shrinking.
+    ++window_.frames;
+    const DecayPair since = decayPair(window_.base, window_.base_valid, field.displacement, field.valid, noise_mm);
+    const double bound = noiseMaximum(since.markers, options_.release_false_alarm);
+    if (since.measured && since.worst_sigmas <= bound && since.alpha > 0 && since.alpha < 1 - k * since.alpha_sd) {
+      decaying_frames_ = window_.frames;
+      // The first pair after the change releases by itself when it shrank more slowly than the change did,
+      // and by enough that a finger still holding a field at the contact threshold, which leaves a part
+      // that does not scale ((1 - alpha) times that field), would have shown.
+      const double s = noise_mm * std::sqrt(1 + since.alpha * since.alpha);
+      recovering_ = window_.frames == 1 &&
+                    since.alpha - window_.alpha > k * std::hypot(since.alpha_sd, window_.alpha_sd) &&
+                    (1 - since.alpha) * contact_threshold_mm > bound * s;
+      rate_sum_ = recovering_ ? since.alpha : 0;
+      rate_count_ = recovering_ ? 1 : 0;
+    }
   }
-  reshaped_ = shrinking && pair.worst_sigmas > options_.release_factor * k;
-  reshaped_alpha_ = pair.alpha;
-  reshaped_alpha_sd_ = pair.alpha_sd;
+  const bool copy = pair.measured && pair.worst_sigmas <= noiseMaximum(pair.markers, options_.release_false_alarm);
+  if (recovering_ || !field.in_contact || (!shrinking && !copy)) {
+    window_.armed = false;  // released, or something other than a gel moved the markers
+  } else if (shrinking && !copy) {
+    // The shape changed while the field shrank: what stays may be the gel alone, judged from here on. The
+    // finger's own field going (a change beyond release_factor x fit_sigmas) arms the release; its rate is
+    // what the gel's must be slower than.
+    if (pair.worst_sigmas > options_.release_factor * k) window_.armed = true;
+    window_.alpha = pair.alpha;
+    window_.alpha_sd = pair.alpha_sd;
+    window_.base = field.displacement;
+    window_.base_valid = field.valid;
+    window_.frames = 0;
+  }
   previous_ = field.displacement;
   previous_valid_ = field.valid;
   if (recovering_ && !remainder_.empty()) {

@@ -17,21 +17,36 @@
 //   u_i,k - alpha u_i,k-1 has per-axis sd s = sigma sqrt(1 + alpha^2), alpha
 //   has sd s / |u_{k-1}|; worst = max_i |residual_i| / s;
 //   shrinking: alpha below 1 by more than fit_sigmas of its sd.
-// Release: in contact at k-1, the contact is over at frame k when
-//   - the pair (k-2, k-1) shrank and changed shape (worst above release_factor
-//     x fit_sigmas): the finger's own field was going;
-//   - the pair (k-1, k) shrinks and is a scaled copy up to the noise alone:
-//     worst within the bound that the largest of N noise residuals (three
-//     unit-normal components each) passes with probability
-//     release_false_alarm (noiseMaximum);
-//   - the shrink slowed down at k: alpha exceeds the last pair's by more than
+// The frames since the finger's field left: in contact, the last pair that
+// shrank and was no scaled copy (worst above the noise bound below) changed
+// the field's shape; it ends on u_j. A change beyond release_factor x
+// fit_sigmas is the finger's own field going and arms the release; a later,
+// smaller one (the last of the finger's field leaving) moves j on; a change
+// that does not shrink (a finger pressing or moving) disarms it. While armed,
+// frame k = j + n is tested against u_j: alpha_n = <u_j, u_k> / <u_j, u_j>
+// must shrink beyond fit_sigmas of its sd with every residual within the
+// bound that the largest of N noise residuals (three unit-normal components
+// each) passes with probability release_false_alarm (noiseMaximum).
+// Release at k = j + 1, the pair right after the change, when besides
+//   - the shrink slowed down: alpha exceeds the changing pair's by more than
 //     fit_sigmas of their combined sd. A finger leaving takes its elastic
 //     field away at the finger's speed; what stays decays at the gel's own
-//     rate, exp(-dt / tau_c) per frame, more slowly.
+//     rate, exp(-dt / tau_c) per frame, more slowly;
+//   - it shrank enough to see a finger that stayed: a finger still holding a
+//     field f under a decaying gel leaves a part that does not scale,
+//     (1 - alpha) f, so only (1 - alpha) x contact threshold beyond the bound
+//     (in units of s) tells a gel alone from a finger still in contact.
+// Before the second condition, the pair rule also released fingers that
+// stayed, and elastic contacts a few frames early (docs/world/README.md).
+// A slow gel at a high frame rate rarely shrinks that much in one frame; its
+// frames since j (decayingFrames(), n while every one is a shrinking copy)
+// are a recovery seen while the contact holds, and GelCreep measures the gel
+// from them (gel_creep.hpp): the whole record inverted with the measured
+// constants must leave no elastic field in them, which a finger that stayed
+// would. The contact then ends by the contact rule on the finger's own field.
 // A finger or a flat plate that lifts while its field keeps its shape also
 // shrinks in proportion; it is told apart only when its shrink does not slow
-// down where the shape change ends (docs/world/README.md gives how often an
-// elastic lift-off ends a few frames early by this).
+// down where the shape change ends.
 // While released, no marker may move away from the rest by more than fit_sigmas s beyond the decay of
 // the last frame (max_i |u_i,k| - alpha |u_i,k-1|; looser than the release's bound: it holds the whole
 // recovery long), and alpha may not exceed the recovery's mean alpha so far by more than fit_sigmas of
@@ -94,7 +109,8 @@ class GelRecovery {
   explicit GelRecovery(GelRecoveryOptions options = {});
   // `field` this frame's contact analysis; `was_in_contact` the tracker's last frame; noise_mm the measured
   // marker noise. True when this frame's deformation is the gel recovering alone: not a contact.
-  bool recovering(const contact::ContactField& field, bool was_in_contact, double noise_mm);
+  bool recovering(const contact::ContactField& field, bool was_in_contact, double noise_mm,
+                  double contact_threshold_mm);
   // What is left of a recovery that a finger interrupted (S, mm per marker; empty when none), advanced by one
   // frame: call once per frame before the analysis. The contact analysis and the pose take it away from the
   // markers, so the new press is measured from where the finger moves them, not where the gel rises to.
@@ -103,14 +119,27 @@ class GelRecovery {
   // without it and is to be analysed again with it taken away).
   bool remainderBegan() const { return remainder_began_; }
   const std::vector<Eigen::Vector3d>& remainder() const { return remainder_; }
+  // In contact, the frames n since the finger's field left during which the field has decayed as a gel does
+  // (every frame a scaled copy of the first, shrinking, more slowly than the field went), whether or not that
+  // decay is yet deep enough to release by itself; 0 otherwise. GelCreep measures the gel from them.
+  int decayingFrames() const { return decaying_frames_; }
   void reset();
 
  private:
   GelRecoveryOptions options_;
   std::vector<Eigen::Vector3d> previous_;
   std::vector<std::uint8_t> previous_valid_;
-  bool reshaped_ = false;  // the last pair shrank and changed shape beyond release_factor x fit_sigmas
-  double reshaped_alpha_ = 0, reshaped_alpha_sd_ = 0;  // its scale and that scale's sd
+  // The frames since the last pair that shrank and changed shape, armed by one that changed it beyond
+  // release_factor x fit_sigmas (the finger's field going).
+  struct ReleaseWindow {
+    bool armed = false;
+    std::vector<Eigen::Vector3d> base;  // u_j, the field the last shape change ended on
+    std::vector<std::uint8_t> base_valid;
+    double alpha = 0, alpha_sd = 0;  // the arming pair's scale and its sd
+    int frames = 0;                  // n, frames since j
+  };
+  ReleaseWindow window_;
+  int decaying_frames_ = 0;
   bool recovering_ = false;
   double rate_sum_ = 0;  // sum and count of the recovery's per-frame scales alpha, for its mean rate
   int rate_count_ = 0;

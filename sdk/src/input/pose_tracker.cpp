@@ -81,7 +81,8 @@ TrackerResult PoseTracker::update(const MarkerField& now_S, const MarkerField& r
   MarkerField now = withoutRemainder(unloaded, recovery_.advance());
   r.field = analyzer_.analyze(now, rest_keeper_.rest());
   const bool recovering = r.field.status == contact::ContactFieldStatus::ok &&
-                          recovery_.recovering(r.field, last_.contact, self_.current().noise_mm);
+                          recovery_.recovering(r.field, last_.contact, self_.current().noise_mm,
+                                                               options_.contact.contact_threshold_mm);
   if (recovering) clearContact(r.field);
   if (recovery_.remainderBegan()) {
     now = withoutRemainder(unloaded, recovery_.remainder());
@@ -102,7 +103,19 @@ TrackerResult PoseTracker::update(const MarkerField& now_S, const MarkerField& r
   // A field sinking through the threshold (a creeping gel after a lift-off) begins no contact from noise.
   const bool may_begin = onset_band_.mayBegin(r.field.max_modulus_mm, r.field.valid_markers,
                                               self_.current().noise_mm, options_.contact.contact_threshold_mm);
-  if (!last_.contact && r.field.in_contact && !may_begin) clearContact(r.field);
+  const auto holdBackNoise = [&] {
+    if (!last_.contact && r.field.in_contact && !may_begin) clearContact(r.field);
+  };
+  holdBackNoise();
+  // This frame measured the gel (a held press, a recovery, or the decay since the finger's field left): it is
+  // analysed again without the gel's delayed part, so a contact ends in the frame its finger is found gone.
+  if (creep_.observe(now, rest_keeper_.rest(), t, r.field.in_contact, self_.current().noise_mm,
+                     recovery_.remainder(), recovery_.decayingFrames())) {
+    recovery_.reset();  // the measured creep holds what was left of a recovery
+    now = withoutRemainder(now_S, creep_.delayed());
+    r.field = analyzer_.analyze(now, rest_keeper_.rest());
+    holdBackNoise();
+  }
   self_.setRest(rest_S);
   self_.observe(unloaded, t, !r.field.in_contact && !recovering);  // a recovering gel moves: not noise
   r.step = estimator_.update(r.field, now, self_.current());
@@ -115,8 +128,6 @@ TrackerResult PoseTracker::update(const MarkerField& now_S, const MarkerField& r
     accumulator_.add(r.step.increment);
   }
   if (r.contact) fillOutputs(r);
-  if (creep_.observe(now, rest_keeper_.rest(), t, r.contact, self_.current().noise_mm, recovery_.remainder()))
-    recovery_.reset();  // the measured creep holds what was left of a recovery
 
   // A contact ends when the pad is released, or when its finger lifts while
   // another stays (the estimator then begins a new contact in the same frame).

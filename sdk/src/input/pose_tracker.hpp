@@ -5,10 +5,12 @@
 //   the rest kept true while nothing touches (rest_keeper.hpp: a shifted
 //   camera, slow drift, hidden markers; each reported as an error event)
 //   -> contact analysis (contact/contact_analyzer.hpp), without the gel's
-//      creep once a held press has measured it (gel_creep.hpp) and without the
+//      creep once it is measured (gel_creep.hpp) and without the
 //      deformation of a gel recovering after the finger left (gel_recovery.hpp)
 //   -> no contact begins from noise while a field that sank through the
 //      contact threshold is still within the noise of it (onset_band.hpp)
+//   -> the gel measured from this frame (a held press, a recovery, or the
+//      decay since the finger's field left): analysed again without its creep
 //   -> what the sensor measures about itself (pose/sensor_self_model.hpp:
 //      marker noise on the frames out of contact, pitch, frame interval)
 //   -> stick/slip labels and the finger's increment (pose/adaptive_pose_estimator.hpp)
@@ -90,7 +92,7 @@ class PoseTracker {
   void reset();
   const PoseTrackerOptions& options() const { return options_; }
   const pose::SensorSelf& sensorSelf() const { return self_.current(); }
-  const CreepModel& gelCreep() const { return creep_.model(); }  // the gel's creep, once a held press measured it
+  const CreepModel& gelCreep() const { return creep_.model(); }  // the gel's creep, once measured
 
  private:
   void emit(TrackerResult& r, EventType type, std::string message = {}) const;

@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <string>
 
+#include "contact_events.hpp"
 #include "input/gel_creep.hpp"
 #include "sim_replay.hpp"
 #include "test_paths.hpp"
@@ -22,8 +23,17 @@ namespace {
 
 constexpr double kNoiseMm = 0.0006;  // sim_replay.hpp's marker noise per axis
 
-sim::Scenario creepPress() {
-  return sim::loadScenario(std::string(test::sourceDir()) + "/tests/data/scenarios/world/creep_press.yaml");
+sim::Scenario worldScenario(const std::string& name) {
+  return sim::loadScenario(std::string(test::sourceDir()) + "/tests/data/scenarios/world/" + name + ".yaml");
+}
+
+sim::Scenario creepPress() { return worldScenario("creep_press"); }
+
+// The tracker's options for a recording: its pad's marker depth, as the pipeline takes it from the pattern.
+PoseTrackerOptions optionsFor(const Recording& recording) {
+  PoseTrackerOptions options;
+  options.marker_depth_mm = recording.marker_depth_mm;
+  return options;
 }
 
 // creep_press's finger on an elastic pad, pressing on from 1.5 mm after 1 s as the creep would sink the
@@ -96,9 +106,7 @@ TEST(GelCreep, AHeldPressReadsTheFingersDepthOnceItsCreepIsMeasured) {
   // 2 s of holding where the truth is 1.375 (the creep as depth).
   const sim::Scenario scenario = creepPress();
   const Recording recording = record(scenario);
-  PoseTrackerOptions options;
-  options.marker_depth_mm = recording.marker_depth_mm;
-  PoseTracker tracker(options);
+  PoseTracker tracker(optionsFor(recording));
   double measured_at = -1;
   double worst_after = 0;
   for (size_t k = 0; k < recording.frames.size(); ++k) {
@@ -157,16 +165,13 @@ TEST(GelCreep, AFingerPressingDeeperOnAnElasticPadIsStillDepth) {
 }
 
 TEST(GelCreep, ARecoveryMeasuresTheGelAndTheNextLiftOffEndsOnTime) {
-  // creep_unheld: two presses that never hold still, so no held press measures the gel. The recovery after the
-  // first lift-off does (u_k = a u_{k-1} while nothing touches): from then on the markers lose the gel's delayed
-  // part, and the second contact ends where the finger's own field goes below the contact threshold, as the
-  // truth's contact rule says, not when the gel has recovered.
-  const sim::Scenario scenario =
-      sim::loadScenario(std::string(test::sourceDir()) + "/tests/data/scenarios/world/creep_unheld.yaml");
+  // creep_unheld: two presses that never hold still, so no held press measures the gel. The decay after the
+  // first finger's field went does (u_k = a u_{k-1}), in the frame that ends the first contact: from then on the
+  // markers lose the gel's delayed part, and the second contact ends where the finger's own field goes below
+  // the contact threshold, as the truth's contact rule says, not when the gel has recovered.
+  const sim::Scenario scenario = worldScenario("creep_unheld");
   const Recording recording = record(scenario);
-  PoseTrackerOptions options;
-  options.marker_depth_mm = recording.marker_depth_mm;
-  PoseTracker tracker(options);
+  PoseTracker tracker(optionsFor(recording));
   std::vector<int> true_ends, ends;
   bool last_truth = false, last = false, measured_in_first = false;
   double worst_dz_second = 0;
@@ -184,12 +189,13 @@ TEST(GelCreep, ARecoveryMeasuresTheGelAndTheNextLiftOffEndsOnTime) {
   const sim::ViscoelasticOptions& gel = scenario.world.viscoelastic;
   ASSERT_FALSE(measured_in_first);  // no hold: the first press measures nothing
   ASSERT_TRUE(tracker.gelCreep().measured());
-  // The release build measures tau_c 1.363 s and c 0.417 (gel: 1.429, 0.429).
+  // The release build measures tau_c 1.446 s and c 0.432 (gel: 1.429, 0.429).
   EXPECT_NEAR(tracker.gelCreep().tau_c_s, gel.retardationTime(), 0.1 * gel.retardationTime());
   EXPECT_NEAR(tracker.gelCreep().gain, gel.creepGain(), 0.1 * gel.creepGain());
   ASSERT_EQ(true_ends.size(), 2u);
   ASSERT_EQ(ends.size(), 2u);
-  EXPECT_LE(std::abs(ends[1] - true_ends[1]), 2) << "truth " << true_ends[1] << ", tracker " << ends[1];
+  for (int i : {0, 1})
+    EXPECT_LE(std::abs(ends[i] - true_ends[i]), 2) << "truth " << true_ends[i] << ", tracker " << ends[i];
   // The second press, begun while the gel still recovers, reads its depth (issue 38: within 0.05 mm; 0.008 mm
   // here, and 0.063 mm with the gel's creep not measured, options.creep.enabled = false).
   EXPECT_LT(worst_dz_second, 0.05);
@@ -197,4 +203,39 @@ TEST(GelCreep, ARecoveryMeasuresTheGelAndTheNextLiftOffEndsOnTime) {
               "c %.3f (%.3f); second press dz within %.3f mm\n",
               true_ends[0], ends[0], true_ends[1], ends[1], tracker.gelCreep().tau_c_s, gel.retardationTime(),
               tracker.gelCreep().gain, gel.creepGain(), worst_dz_second);
+}
+
+TEST(GelCreep, TheDecayAfterTheFingerLeftMeasuresTheGelBeforeTheContactEnds) {
+  // creep_first_lift: a slow gel at 120 frames/s, its only press never held. After the lift the surface shrinks
+  // 0.3 % a frame, and the release rule alone (gel_recovery.hpp) cannot end the contact from one frame. The
+  // frames after the finger's field went, each a shrinking copy of the first, measure the gel while the contact
+  // holds; the frame that measures it is analysed without the gel's delayed part and the contact ends there.
+  const sim::Scenario scenario = worldScenario("creep_first_lift");
+  const Recording recording = record(scenario);
+  PoseTracker tracker(optionsFor(recording));
+  std::vector<ReplayFrame> frames;
+  for (size_t k = 0; k < recording.frames.size(); ++k)
+    frames.push_back(replayFrame(recording.truth[k],
+                                 tracker.update(recording.frames[k], recording.rest, recording.truth[k].t),
+                                 recording.frames[k].size()));
+  // The release build ends it 8 frames (0.07 s) after the truth, from a gel measured over the first frames of
+  // a 0.3 %-a-frame decay: tau_c 1.95 s, c 0.31 (2.86, 0.43). That is not the issue's 2 frames, and the
+  // constants are what so short a decay gives (docs/world/README.md); it is a tenth of the wait without them.
+  const ContactEvents e = contactEvents(frames);
+  ASSERT_EQ(e.end_lag.size(), 1u);
+  EXPECT_GE(e.end_lag[0], 0);
+  EXPECT_LE(e.end_lag[0], 10);
+  EXPECT_EQ(e.estimate_onset.size(), 1u);
+  EXPECT_EQ(e.onsets_untouched, 0);
+  const sim::ViscoelasticOptions& gel = scenario.world.viscoelastic;
+  ASSERT_TRUE(tracker.gelCreep().measured());
+  // Without the creep unit the contact lasts until the gel is within the contact threshold.
+  ReplayOptions off;
+  off.tracker.creep.enabled = false;
+  const ContactEvents without = contactEvents(replay(scenario, off));
+  ASSERT_EQ(without.end_lag.size(), 1u);
+  EXPECT_GT(without.end_lag[0], 30);
+  std::printf("lift-off %d frames late (%d without the creep unit); gel tau_c %.3f s (%.3f), c %.3f (%.3f)\n",
+              e.end_lag[0], without.end_lag[0], tracker.gelCreep().tau_c_s, gel.retardationTime(),
+              tracker.gelCreep().gain, gel.creepGain());
 }

@@ -36,7 +36,7 @@ TEST(WorldScenarios, EveryExampleLoadsWithItsEffectAndTouchesOnlyWhenAFingerDoes
     }
     EXPECT_GT(touched, 0) << e.path();
   }
-  EXPECT_EQ(count, 9);
+  EXPECT_EQ(count, 10);
 }
 
 TEST(WorldScenarios, BadEffectValuesNameTheirKey) {
