@@ -36,8 +36,8 @@
 //     field f under a decaying gel leaves a part that does not scale,
 //     (1 - alpha) f, so only (1 - alpha) x contact threshold beyond the bound
 //     (in units of s) tells a gel alone from a finger still in contact.
-// Before the second condition, the pair rule also released fingers that
-// stayed, and elastic contacts a few frames early (docs/world/README.md).
+// Without the second condition the rule releases fingers that stay, and
+// elastic contacts that lift in proportion, early (docs/world/README.md).
 // A slow gel at a high frame rate rarely shrinks that much in one frame; its
 // frames since j (decayingFrames(), n while every one is a shrinking copy)
 // are a recovery seen while the contact holds, and GelCreep measures the gel
