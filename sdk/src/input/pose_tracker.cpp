@@ -80,9 +80,9 @@ TrackerResult PoseTracker::update(const MarkerField& now_S, const MarkerField& r
   const MarkerField unloaded = withoutRemainder(now_S, creep_.advance(now_S, rest_keeper_.rest(), t));
   MarkerField now = withoutRemainder(unloaded, recovery_.advance());
   r.field = analyzer_.analyze(now, rest_keeper_.rest());
-  const bool recovering = r.field.status == contact::ContactFieldStatus::ok &&
-                          recovery_.recovering(r.field, last_.contact, self_.current().noise_mm,
-                                                               options_.contact.contact_threshold_mm);
+  const bool recovering =
+      r.field.status == contact::ContactFieldStatus::ok &&
+      recovery_.recovering(r.field, last_.contact, self_.current().noise_mm, options_.contact.contact_threshold_mm);
   if (recovering) clearContact(r.field);
   if (recovery_.remainderBegan()) {
     now = withoutRemainder(unloaded, recovery_.remainder());
