@@ -22,6 +22,7 @@
 
 #include <Eigen/Core>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace onetip::input {
@@ -30,6 +31,12 @@ struct CreepModel {
   double tau_c_s = 0;  // retardation time tau_c, s (> 0 when measured)
   double gain = 0;     // c = r / (1 - r), dimensionless (> 0 when measured)
   bool measured() const { return tau_c_s > 0 && gain > 0; }
+  // In the terms of a material's datasheet (and of the simulator's `viscoelastic` option): the relaxed
+  // fraction r = c / (1 + c) of the modulus and the relaxation time tau = tau_c (1 - r), s.
+  double relaxedFraction() const { return gain / (1 + gain); }
+  double relaxationTime() const { return tau_c_s * (1 - relaxedFraction()); }
+  // One line for a user: what was measured, in those terms.
+  std::string describe() const;
   // One frame of dt seconds: v (S, mm per marker) advanced with the measured displacements u (p - rest, S, mm);
   // markers not valid in u keep their v decaying as without load.
   void step(std::vector<Eigen::Vector3d>& v, const std::vector<Eigen::Vector3d>& u,

@@ -5,7 +5,8 @@
 // press button (press_button.hpp); state_changed: the contact state
 // (none, stick, partial_slip, slip) differs from the previous frame's;
 // error: something the caller should know (too few markers, solver failure,
-// a motion limited for safety, the working range exceeded), with a message.
+// a motion limited for safety, the working range exceeded, the camera moved,
+// markers hidden for good, the gel's creep measured), with a message.
 #pragma once
 
 #include <string>

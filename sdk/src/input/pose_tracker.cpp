@@ -109,8 +109,10 @@ TrackerResult PoseTracker::update(const MarkerField& now_S, const MarkerField& r
   holdBackNoise();
   // This frame measured the gel (a held press, a recovery, or the decay since the finger's field left): it is
   // analysed again without the gel's delayed part, so a contact ends in the frame its finger is found gone.
-  if (creep_.observe(now, rest_keeper_.rest(), t, r.field.in_contact, self_.current().noise_mm,
-                     recovery_.remainder(), recovery_.decayingFrames())) {
+  const bool gel_measured = creep_.observe(now, rest_keeper_.rest(), t, r.field.in_contact,
+                                           self_.current().noise_mm, recovery_.remainder(),
+                                           recovery_.decayingFrames());
+  if (gel_measured) {
     recovery_.reset();  // the measured creep holds what was left of a recovery
     now = withoutRemainder(now_S, creep_.delayed());
     r.field = analyzer_.analyze(now, rest_keeper_.rest());
@@ -153,6 +155,7 @@ TrackerResult PoseTracker::update(const MarkerField& now_S, const MarkerField& r
          "the camera moved against the pad by " + std::to_string(rest_update.moved_mm) +
              " mm: the rest reference follows it");
   if (!rest_update.hidden.empty()) emit(r, EventType::error, describeHidden(rest_update.hidden));
+  if (gel_measured) emit(r, EventType::error, creep_.model().describe());
   r.pressed = button_.pressed();
   last_ = r;
   last_.field = contact::ContactField{};  // only the outputs are needed to hold a frame

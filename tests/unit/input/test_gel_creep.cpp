@@ -133,6 +133,38 @@ TEST(GelCreep, AHeldPressReadsTheFingersDepthOnceItsCreepIsMeasured) {
   EXPECT_GT(before[90].raw.dz - before[90].gt.dz, 0.3);
 }
 
+TEST(GelCreep, TheMeasuredGelIsReportedOnceInTheTermsOfItsDatasheet) {
+  // A user sees the gel measured where it happens (tools/sensor_notices.hpp prints it): one error event, in
+  // the frame the creep became known, naming the relaxed fraction r = c / (1 + c) and the relaxation time
+  // tau_c (1 - r), the simulator's own `viscoelastic` terms (creep_press: r 0.3, tau 1 s).
+  const sim::Scenario scenario = creepPress();
+  const Recording recording = record(scenario);
+  PoseTracker tracker(optionsFor(recording));
+  int notices = 0;
+  double percent = -1, tau_s = -1;
+  bool known_before = false, named_when_known = false;
+  for (size_t k = 0; k < recording.frames.size(); ++k) {
+    const TrackerResult r = tracker.update(recording.frames[k], recording.rest, recording.truth[k].t);
+    for (const InputEvent& e : r.events) {
+      if (e.type != EventType::error || e.message.find("creep measured") == std::string::npos) continue;
+      ++notices;
+      named_when_known = tracker.gelCreep().measured() && !known_before;
+      ASSERT_EQ(std::sscanf(e.message.c_str(), "the gel's creep measured: %lf %% of its modulus relaxes, "
+                                                "relaxation time %lf s", &percent, &tau_s), 2) << e.message;
+    }
+    known_before = tracker.gelCreep().measured();
+  }
+  EXPECT_EQ(notices, 1);
+  EXPECT_TRUE(named_when_known);
+  const sim::ViscoelasticOptions& gel = scenario.world.viscoelastic;
+  // The message's figures are the model's, rounded: r to a percent, tau to 10 ms.
+  EXPECT_NEAR(percent, 100 * tracker.gelCreep().relaxedFraction(), 0.5);
+  EXPECT_NEAR(tau_s, tracker.gelCreep().relaxationTime(), 0.005);
+  // And the gel's within the accuracy the test above allows its constants (r within 0.05, tau within 25 %).
+  EXPECT_NEAR(percent / 100, gel.relaxation, 0.05);
+  EXPECT_NEAR(tau_s, gel.time_s, 0.25 * gel.time_s);
+}
+
 TEST(GelCreep, APressOnAGelWhoseCreepIsKnownReadsItsDepthWhileHeld) {
   // creep_repress: the first press (held 2 s) measures the gel; the second, begun 0.3 s after the first lift-off
   // with the surface still 0.5 mm from rest, is held 0.3 s at 1 mm (before: 0.958 mm after 0.3 s against 0.867).
