@@ -30,8 +30,10 @@
 // The test, in contact, on the frames recorded since the contact began: three
 // fields m frames apart, A = u_{k-2m}, B = u_{k-m}, C = u_k (m from 2 up in
 // steps of a quarter, the longest first), d1 = B - A, d2 = C - B over the
-// markers valid throughout, sigma the measured marker noise
-// (pose/sensor_self_model.hpp):
+// markers valid throughout, sigma the measured marker noise of the noisiest
+// axis (pose/sensor_self_model.hpp: largest_axis_noise_mm; through a stereo
+// pair the depth, six times the lateral noise, and a press moves the markers
+// along it):
 //   rho = (<d1, d2> + 3 n sigma^2) / (<d1, d1> - 6 n sigma^2)  (least squares
 //   without the noise's own share: B's noise enters d1 and d2 with opposite
 //   signs), a^m under a held press; rho has sd s / |d1|,

@@ -13,7 +13,8 @@
 //
 // The pair test, over the markers valid in both frames:
 //   alpha = <u_{k-1}, u_k> / <u_{k-1}, u_{k-1}> (least squares), and with the
-//   marker noise sigma (per axis, pose/sensor_self_model.hpp) each residual
+//   marker noise sigma (per axis, its noisiest: pose/sensor_self_model.hpp's
+//   largest_axis_noise_mm, the depth through a stereo pair) each residual
 //   u_i,k - alpha u_i,k-1 has per-axis sd s = sigma sqrt(1 + alpha^2), alpha
 //   has sd s / |u_{k-1}|; worst = max_i |residual_i| / s;
 //   shrinking: alpha below 1 by more than fit_sigmas of its sd.

@@ -8,8 +8,8 @@
 // creeping gel's delayed part after a lift-off, a recovery that sinks below
 // T: gel_recovery.hpp) sits near T for many frames, and noise moves m across
 // it both ways: each upward crossing would begin a contact while nothing
-// touches. With sigma the measured marker noise per axis
-// (pose/sensor_self_model.hpp) and N markers measured, the noise lifts m
+// touches. With sigma the measured marker noise per axis, the noisiest axis's
+// (pose/sensor_self_model.hpp: largest_axis_noise_mm) and N markers measured, the noise lifts m
 // above its noiseless value by at most the largest noise vector,
 //   |u_i + n_i| <= |u_i| + |n_i|,   max_i |n_i| <= b = sigma noiseMaximum(N, p)
 // with probability 1 - p per frame (gel_recovery.hpp's noiseMaximum: three

@@ -82,7 +82,8 @@ TrackerResult PoseTracker::update(const MarkerField& now_S, const MarkerField& r
   r.field = analyzer_.analyze(now, rest_keeper_.rest());
   const bool recovering =
       r.field.status == contact::ContactFieldStatus::ok &&
-      recovery_.recovering(r.field, last_.contact, self_.current().noise_mm, options_.contact.contact_threshold_mm);
+      recovery_.recovering(r.field, last_.contact, self_.current().largest_axis_noise_mm,
+                           options_.contact.contact_threshold_mm);
   if (recovering) clearContact(r.field);
   if (recovery_.remainderBegan()) {
     now = withoutRemainder(unloaded, recovery_.remainder());
@@ -102,7 +103,8 @@ TrackerResult PoseTracker::update(const MarkerField& now_S, const MarkerField& r
   }
   // A field sinking through the threshold (a creeping gel after a lift-off) begins no contact from noise.
   const bool may_begin = onset_band_.mayBegin(r.field.max_modulus_mm, r.field.valid_markers,
-                                              self_.current().noise_mm, options_.contact.contact_threshold_mm);
+                                              self_.current().largest_axis_noise_mm,
+                                              options_.contact.contact_threshold_mm);
   const auto holdBackNoise = [&] {
     if (!last_.contact && r.field.in_contact && !may_begin) clearContact(r.field);
   };
@@ -110,7 +112,7 @@ TrackerResult PoseTracker::update(const MarkerField& now_S, const MarkerField& r
   // This frame measured the gel (a held press, a recovery, or the decay since the finger's field left): it is
   // analysed again without the gel's delayed part, so a contact ends in the frame its finger is found gone.
   const bool gel_measured = creep_.observe(now, rest_keeper_.rest(), t, r.field.in_contact,
-                                           self_.current().noise_mm, recovery_.remainder(),
+                                           self_.current().largest_axis_noise_mm, recovery_.remainder(),
                                            recovery_.decayingFrames());
   if (gel_measured) {
     recovery_.reset();  // the measured creep holds what was left of a recovery

@@ -31,7 +31,7 @@ void SensorSelfOptions::validate() const {
 
 SensorSelfModel::SensorSelfModel(SensorSelfOptions options) : options_(options) {
   options_.validate();
-  self_.noise_mm = options_.prior_noise_mm;
+  self_.noise_mm = self_.largest_axis_noise_mm = options_.prior_noise_mm;
   self_.frame_s = options_.prior_frame_s;
 }
 
@@ -62,16 +62,25 @@ void SensorSelfModel::observe(const MarkerField& now, double t, bool at_rest) {
     return;
   }
   if (have_previous_ && previous_rest_frame_.size() == now.size()) {
-    std::vector<double> squares;
+    std::vector<double> squares, axis[3];
     for (size_t i = 0; i < now.position.size(); ++i) {
       if (!now.valid[i] || !previous_rest_frame_.valid[i]) continue;
       const Eigen::Vector3d d = now.position[i] - previous_rest_frame_.position[i];
-      for (int k = 0; k < 3; ++k) squares.push_back(d[k] * d[k]);
+      for (int k = 0; k < 3; ++k) {
+        squares.push_back(d[k] * d[k]);
+        axis[k].push_back(d[k] * d[k]);
+      }
     }
     if (squares.size() >= 9) {
-      const double sigma = std::sqrt(upperMedian(std::move(squares)) / kChi2OneMedian / 2.0);
-      pushBounded(noise_samples_, sigma, options_.window);
+      const auto sigma = [](std::vector<double> v) { return std::sqrt(upperMedian(std::move(v)) / kChi2OneMedian / 2.0); };
+      pushBounded(noise_samples_, sigma(std::move(squares)), options_.window);
       self_.noise_mm = upperMedian({noise_samples_.begin(), noise_samples_.end()});
+      self_.largest_axis_noise_mm = 0;
+      for (int k = 0; k < 3; ++k) {
+        pushBounded(axis_samples_[k], sigma(std::move(axis[k])), options_.window);
+        self_.largest_axis_noise_mm =
+            std::max(self_.largest_axis_noise_mm, upperMedian({axis_samples_[k].begin(), axis_samples_[k].end()}));
+      }
       self_.noise_measured = true;
     }
   }

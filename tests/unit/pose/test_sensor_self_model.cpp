@@ -49,6 +49,30 @@ TEST(SensorSelfModel, MeasuresNoisePitchAndFrameIntervalOnRestFrames) {
   }
 }
 
+TEST(SensorSelfModel, TheNoisiestAxisIsMeasuredBesideThePooledNoise) {
+  // Through a stereo pair the depth is the noisiest axis (through the simulator's images z 0.0013 mm against x
+  // and y 0.0002). The pooled sigma is then the lateral one; a bound on a marker's 3-D noise needs the depth's.
+  SensorSelfModel model;
+  const MarkerField rest = grid(13, 1.2);
+  model.setRest(rest);
+  std::mt19937 rng(5);
+  std::normal_distribution<double> lateral(0, 0.0002), depth(0, 0.0013);
+  for (int k = 0; k < 12; ++k) {
+    MarkerField f = rest;
+    for (auto& p : f.position) p += Eigen::Vector3d(lateral(rng), lateral(rng), depth(rng));
+    model.observe(f, k / 90.0, true);
+  }
+  const SensorSelf& s = model.current();
+  EXPECT_NEAR(s.largest_axis_noise_mm, 0.0013, 0.1 * 0.0013);
+  EXPECT_LT(s.noise_mm, 0.0005);  // two thirds of the pooled components are lateral: their median is lateral
+  // Isotropic noise: the largest axis is the pooled sigma, within the estimate's scatter.
+  SensorSelfModel isotropic;
+  isotropic.setRest(rest);
+  for (int k = 0; k < 12; ++k) isotropic.observe(noisy(rest, 0.0006, rng), k / 90.0, true);
+  EXPECT_NEAR(isotropic.current().largest_axis_noise_mm, 0.0006, 0.1 * 0.0006);
+  EXPECT_GE(isotropic.current().largest_axis_noise_mm, isotropic.current().noise_mm * 0.95);
+}
+
 TEST(SensorSelfModel, FramesInContactDoNotCountAsNoiseAndLostMarkersAreSkipped) {
   SensorSelfModel model;
   const MarkerField rest = grid(9, 1.2);
@@ -73,6 +97,7 @@ TEST(SensorSelfModel, PriorsHoldUntilMeasured) {
   o.prior_frame_s = 0.01;
   SensorSelfModel model(o);
   EXPECT_EQ(model.current().noise_mm, 0.004);
+  EXPECT_EQ(model.current().largest_axis_noise_mm, 0.004);
   EXPECT_EQ(model.current().frame_s, 0.01);
   o.window = 0;
   EXPECT_THROW(SensorSelfModel{o}, InputError);
