@@ -72,7 +72,9 @@ void SensorSelfModel::observe(const MarkerField& now, double t, bool at_rest) {
       }
     }
     if (squares.size() >= 9) {
-      const auto sigma = [](std::vector<double> v) { return std::sqrt(upperMedian(std::move(v)) / kChi2OneMedian / 2.0); };
+      const auto sigma = [](std::vector<double> v) {
+        return std::sqrt(upperMedian(std::move(v)) / kChi2OneMedian / 2.0);
+      };
       pushBounded(noise_samples_, sigma(std::move(squares)), options_.window);
       self_.noise_mm = upperMedian({noise_samples_.begin(), noise_samples_.end()});
       self_.largest_axis_noise_mm = 0;
