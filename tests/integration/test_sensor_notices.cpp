@@ -41,6 +41,17 @@ std::string processNotices(const std::string& scenario) {
   return s.str();
 }
 
+// The stderr of `onetip demo --scenario <scenario> --out <out>`, kept in err_file.
+std::string demoNotices(const std::string& scenario, const std::string& out, const std::string& err_file) {
+  const std::string cmd = std::string(onetip::test::cliPath()) + " demo --scenario " + scenario + " --out " + out +
+                          " >/dev/null 2>" + err_file;
+  EXPECT_EQ(std::system(cmd.c_str()), 0) << cmd;
+  std::ifstream in(err_file);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
 std::vector<std::string> linesMatching(const std::string& text, const std::string& needle) {
   std::vector<std::string> out;
   std::istringstream in(text);
@@ -81,14 +92,9 @@ TEST(SensorNotices, AShiftedMirrorIsNamedAndThePressAfterItReadsTrue) {
   const long long shift_frame = std::llround(sc.world.camera_shift.at_s * sc.fps);
   const onetip::test_support::ScratchDir dir("onetip-mirror");
   const std::string out = dir.file("demo");
-  const std::string cmd = std::string(onetip::test::cliPath()) + " demo --scenario " + path + " --out " + out +
-                          " >/dev/null 2>" + dir.file("err");
-  ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
-  std::ifstream err_in(dir.file("err"));
-  std::stringstream err;
-  err << err_in.rdbuf();
-  const std::vector<std::string> lines = linesMatching(err.str(), "moved against the pad");
-  ASSERT_EQ(lines.size(), 1u) << err.str();
+  const std::string err = demoNotices(path, out, dir.file("err"));
+  const std::vector<std::string> lines = linesMatching(err, "moved against the pad");
+  ASSERT_EQ(lines.size(), 1u) << err;
   EXPECT_NE(lines[0].find("left mirror"), std::string::npos) << lines[0];
   EXPECT_NE(lines[0].find("frame " + std::to_string(shift_frame) + ":"), std::string::npos) << lines[0];
   const onetip::CsvTable est = onetip::readCsv(out + "/est_pose.csv");
@@ -114,14 +120,9 @@ TEST(SensorNotices, AHeldPressOnACreepingGelNamesTheGelAndTheContactEndsWithTheF
   const onetip::sim::Scenario sc = onetip::sim::loadScenario(path);
   const onetip::test_support::ScratchDir dir("onetip-creep");
   const std::string out = dir.file("demo");
-  const std::string cmd = std::string(onetip::test::cliPath()) + " demo --scenario " + path + " --out " + out +
-                          " >/dev/null 2>" + dir.file("err");
-  ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
-  std::ifstream err_in(dir.file("err"));
-  std::stringstream err;
-  err << err_in.rdbuf();
-  const std::vector<std::string> lines = linesMatching(err.str(), "creep measured");
-  ASSERT_EQ(lines.size(), 1u) << err.str();
+  const std::string err = demoNotices(path, out, dir.file("err"));
+  const std::vector<std::string> lines = linesMatching(err, "creep measured");
+  ASSERT_EQ(lines.size(), 1u) << err;
   long long frame = -1;
   double percent = -1, tau_s = -1;
   ASSERT_EQ(std::sscanf(lines[0].c_str(),
